@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// What a penetration query asks for (`Query`) and what it returns (`Result`), shared by every
+/// method.
+///
+/// Conventions:
+/// - `normal` is a unit vector pointing from A to B: translating B by `depth * normal` brings a
+///   penetrating pair to touching.
+/// - `separation` is signed: `-depth` when penetrating, the Euclidean distance when apart.
+/// - Points are in world coordinates; feature indices are in the caller's vertex order (edge `i`
+///   runs from vertex `i` to vertex `(i + 1) % 3`).
+/// - Which fields are valid depends on the `status` and on the `Level` asked for; it is written
+///   on each field. Fields that are not valid keep their default values.
+
+#include <array>
+#include <cstdint>
+
+#include "dyop/vec2.hpp"
+
+namespace dyop {
+
+/// How two triangles relate. `Touching` means |separation| is within rounding of zero
+/// (`touching_tolerance`), so the closed triangles meet but neither overlaps the other.
+enum class Status : std::uint8_t { Separated, Touching, Penetrating, Invalid };
+
+/// How much a caller wants; a method computes nothing beyond the level asked for.
+enum class Level : std::uint8_t {
+  Overlap,   ///< `status` only; a method may exit at the first separating axis
+  Depth,     ///< + `depth`, `separation`, `normal`
+  Contact,   ///< + witness points and the feature pair
+  Manifold,  ///< + up to two clipped contact points (as Box2D's solver needs)
+};
+
+/// A query: the level, and for `Level::Manifold` how contact points are kept.
+template <class T>
+struct Query {
+  Level level = Level::Depth;  ///< what to compute
+  /// Manifold only: contact points (and whole manifolds of separated pairs) are kept while their
+  /// separation is at most `margin` (length units; Box2D passes the sum of the two skins, so
+  /// contacts are speculative). 0 keeps only touching and penetrating points.
+  T margin = 0;
+  /// Manifold only, exact methods: a face of B is the reference face only when its separation
+  /// exceeds A's best by more than this (length units; Box2D uses 0.1·linearSlop) — hysteresis
+  /// against the reference face flipping between frames. 0 takes the minimum-depth face.
+  T face_hysteresis = 0;
+};
+
+/// A vertex or an edge of one triangle, by caller's index.
+struct Feature {
+  enum class Type : std::uint8_t { None, Vertex, Edge };
+  Type type = Type::None;  ///< None when no feature was computed
+  std::uint8_t index = 0;  ///< caller's vertex index, or caller's edge index (edge i: vertex i→i+1)
+};
+
+/// Which end of the reference face clipped a manifold point (part of its key).
+enum class ClipSide : std::uint8_t { None, Start, End };
+
+/// One contact point of a manifold.
+template <class T>
+struct ManifoldPoint {
+  Vec2<T> point = Vec2<T>::Zero();  ///< world; on the incident triangle's edge (after clipping)
+  T separation = 0;  ///< signed distance from the reference face line, negative when penetrating
+  /// Feature pair that made the point, stable from frame to frame while the same features touch
+  /// (warm starting matches on it): reference side and edge, incident vertex or clipped edge.
+  std::uint32_t key = 0;
+};
+
+/// Up to two contact points on a reference face, in the manner of Box2D's `b2CollidePolygons`.
+template <class T>
+struct Manifold {
+  int point_count = 0;          ///< 0, 1 or 2
+  bool reference_is_a = true;   ///< the reference face belongs to A (false: to B)
+  std::uint8_t reference_edge = 0;  ///< caller's edge index of the reference face
+  std::uint8_t incident_edge = 0;   ///< caller's edge index of the incident edge (other triangle)
+  Vec2<T> normal = Vec2<T>::Zero();  ///< unit, A to B (reference face normal, negated for B)
+  std::array<ManifoldPoint<T>, 2> points{};  ///< first `point_count` are valid
+};
+
+/// The answer of every method, returned by value.
+template <class T>
+struct Result {
+  Status status = Status::Invalid;  ///< always valid
+  /// Invalid only: a static string naming what the method could not handle; nullptr otherwise.
+  const char* reason = nullptr;
+  /// Level ≥ Depth, not Invalid: signed; `-depth` when penetrating, the distance when apart.
+  T separation = 0;
+  /// Level ≥ Depth, not Invalid: `max(0, -separation)`, length units, ≥ 0.
+  T depth = 0;
+  /// Level ≥ Depth, not Invalid: unit, A to B. Penetrating or touching: the minimum-translation
+  /// axis (B moved by `depth * normal` separates). Separated: from `witness_a` to `witness_b`.
+  Vec2<T> normal = Vec2<T>::Zero();
+  /// Level ≥ Contact, not Invalid: world. Penetrating: the deepest point of A inside B or its
+  /// projection, so that `witness_a - witness_b == depth * normal`. Separated: closest points.
+  Vec2<T> witness_a = Vec2<T>::Zero();
+  Vec2<T> witness_b = Vec2<T>::Zero();  ///< Level ≥ Contact: see `witness_a`
+  Feature feature_a;  ///< Level ≥ Contact: the feature of A that realises the answer
+  Feature feature_b;  ///< Level ≥ Contact: the feature of B that realises the answer
+  int iterations = 0;  ///< iterative methods (Lin–Canny, EPA): steps taken; 0 for the others
+  Manifold<T> manifold;  ///< Level == Manifold, Touching/Penetrating or within `margin`
+};
+
+/// Tolerance around zero separation inside which a pair is `Touching`, relative to the larger
+/// triangle's size. Why: the exact methods compute a separation with a rounding error of a few
+/// eps times the size (one subtraction into the local frame, one dot product); 32·eps keeps a
+/// margin above that. double: 7.1e-15, float: 3.8e-6 (relative).
+template <class T>
+constexpr T touching_tolerance() {
+  return T(32) * Eigen::NumTraits<T>::epsilon();
+}
+
+}  // namespace dyop

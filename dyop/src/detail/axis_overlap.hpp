@@ -1,0 +1,53 @@
+#pragma once
+// Internal: the overlap of a pair along one candidate axis of the Minkowski difference.
+
+#include "detail/pair_frame.hpp"
+
+namespace dyop::detail {
+
+template <class T>
+struct AxisOverlap {
+  int axis = -1;    // 0..2: A's edge `axis`; 3..5: B's edge `axis - 3`
+  T overlap = 0;    // max_A(u·a) − min_B(u·b) for u = frame.axis(axis); negative: apart
+  int deep = 0;     // CCW index of the other triangle's vertex that realises it
+};
+
+// Index and value of the smallest of three.
+template <class T>
+inline void min3(T d0, T d1, T d2, T& value, int& index) {
+  index = 0;
+  value = d0;
+  if (d1 < value) { value = d1; index = 1; }
+  if (d2 < value) { value = d2; index = 2; }
+}
+
+// Axis of A's edge i: the edge line is A's support; B's deepest vertex is the least along n.
+template <class T>
+inline AxisOverlap<T> overlap_on_a_edge(const PairFrame<T>& f, int i) {
+  const Vec2<T>& n = f.ta.normal(i);
+  AxisOverlap<T> r;
+  r.axis = i;
+  T least;
+  min3(n.dot(f.b[0]), n.dot(f.b[1]), n.dot(f.b[2]), least, r.deep);
+  r.overlap = n.dot(f.a[i]) - least;
+  return r;
+}
+
+// Axis of B's edge j (u = −n_j): overlap = n_j·b_j − min_A(n_j·a); the deep vertex is A's.
+template <class T>
+inline AxisOverlap<T> overlap_on_b_edge(const PairFrame<T>& f, int j) {
+  const Vec2<T>& n = f.tb.normal(j);
+  AxisOverlap<T> r;
+  r.axis = 3 + j;
+  T least;
+  min3(n.dot(f.a[0]), n.dot(f.a[1]), n.dot(f.a[2]), least, r.deep);
+  r.overlap = n.dot(f.b[j]) - least;
+  return r;
+}
+
+template <class T>
+inline AxisOverlap<T> overlap_on_axis(const PairFrame<T>& f, int k) {
+  return k < 3 ? overlap_on_a_edge(f, k) : overlap_on_b_edge(f, k - 3);
+}
+
+}  // namespace dyop::detail

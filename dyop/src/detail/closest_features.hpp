@@ -1,0 +1,91 @@
+#pragma once
+// Internal: the exact distance between two disjoint triangles and its closest features.
+//
+// Two disjoint convex polygons have their closest points on a vertex of one and an edge (or
+// vertex) of the other, so the distance is the least of the 18 vertex–edge distances. When the
+// closest point lies inside the edge, the distance is taken along the edge's unit normal (no
+// subtraction of nearly equal points), which keeps it accurate relative to the pair's size.
+
+#include <cmath>
+#include <limits>
+
+#include "detail/pair_frame.hpp"
+#include "dyop/result.hpp"
+
+namespace dyop::detail {
+
+template <class T>
+struct Closest {
+  T distance = 0;
+  Vec2<T> point_a = Vec2<T>::Zero();  // local
+  Vec2<T> point_b = Vec2<T>::Zero();  // local
+  Vec2<T> normal = Vec2<T>::Zero();   // unit, A to B
+  Feature feature_a;                  // CCW indices (mapped by the caller)
+  Feature feature_b;
+};
+
+// Closest point to `p` on edge `j` of triangle `verts` with unit outward normal `n`. Returns the
+// squared distance; `feature` is the edge or the vertex the closest point falls on.
+template <class T>
+inline T closest_on_edge(const std::array<Vec2<T>, 3>& verts, int j, const Vec2<T>& n,
+                         const Vec2<T>& p, Vec2<T>& closest, Feature& feature) {
+  const Vec2<T>& q0 = verts[j];
+  const Vec2<T>& q1 = verts[next3(j)];
+  const Vec2<T> e = q1 - q0;
+  const T t = e.dot(p - q0);
+  if (t <= 0) {
+    closest = q0;
+    feature = {Feature::Type::Vertex, static_cast<std::uint8_t>(j)};
+    return (p - q0).squaredNorm();
+  }
+  const T ee = e.squaredNorm();
+  if (t >= ee) {
+    closest = q1;
+    feature = {Feature::Type::Vertex, static_cast<std::uint8_t>(next3(j))};
+    return (p - q1).squaredNorm();
+  }
+  const T h = n.dot(p - q0);
+  closest = p - h * n;
+  feature = {Feature::Type::Edge, static_cast<std::uint8_t>(j)};
+  return h * h;
+}
+
+// Distance of two triangles known to be apart (callers have a separating axis).
+template <class T>
+Closest<T> closest_features(const PairFrame<T>& f) {
+  Closest<T> best;
+  T best_sq = std::numeric_limits<T>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      Vec2<T> c;
+      Feature fe;
+      // A's vertex i against B's edge j.
+      T d = closest_on_edge(f.b, j, f.tb.normal(j), f.a[i], c, fe);
+      if (d < best_sq) {
+        best_sq = d;
+        best.point_a = f.a[i];
+        best.point_b = c;
+        best.feature_a = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
+        best.feature_b = fe;
+        best.normal = fe.type == Feature::Type::Edge ? Vec2<T>(-f.tb.normal(j)) : Vec2<T>::Zero();
+      }
+      // B's vertex i against A's edge j.
+      d = closest_on_edge(f.a, j, f.ta.normal(j), f.b[i], c, fe);
+      if (d < best_sq) {
+        best_sq = d;
+        best.point_a = c;
+        best.point_b = f.b[i];
+        best.feature_a = fe;
+        best.feature_b = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
+        best.normal = fe.type == Feature::Type::Edge ? f.ta.normal(j) : Vec2<T>::Zero();
+      }
+    }
+  }
+  best.distance = std::sqrt(best_sq);
+  if (best.normal.isZero() && best.distance > 0) {
+    best.normal = (best.point_b - best.point_a) / best.distance;
+  }
+  return best;
+}
+
+}  // namespace dyop::detail

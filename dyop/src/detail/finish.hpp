@@ -1,0 +1,98 @@
+#pragma once
+// Internal: turning a method's chosen axis (or a proof of separation) into a `Result`, computing
+// only what the query's level asks for. One set of helpers serves every method.
+
+#include "detail/axis_overlap.hpp"
+#include "detail/clip_manifold.hpp"
+#include "detail/closest_features.hpp"
+#include "dyop/result.hpp"
+
+namespace dyop::detail {
+
+template <class T>
+inline T touching_band(const PairFrame<T>& f) {
+  return touching_tolerance<T>() * f.scale;
+}
+
+// Status of a signed overlap (positive: penetrating) against the touching band.
+template <class T>
+inline Status classify(T overlap, T band) {
+  if (overlap > band) return Status::Penetrating;
+  if (overlap >= -band) return Status::Touching;
+  return Status::Separated;
+}
+
+template <class T>
+inline Feature input_feature(const Triangle<T>& t, Feature f) {
+  if (f.type == Feature::Type::Vertex) f.index = static_cast<std::uint8_t>(t.input_vertex(f.index));
+  if (f.type == Feature::Type::Edge) f.index = static_cast<std::uint8_t>(t.input_edge(f.index));
+  return f;
+}
+
+// A touching or penetrating pair answered by axis `ax` (its overlap is the depth).
+template <class T>
+void fill_from_axis(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax, Result<T>& r) {
+  if (level == Level::Overlap) return;
+  const Vec2<T> u = f.axis(ax.axis);
+  r.separation = -ax.overlap;
+  r.depth = ax.overlap > 0 ? ax.overlap : T(0);
+  r.normal = u;
+  if (level == Level::Depth) return;
+  if (ax.axis < 3) {  // A's face, B's deepest vertex
+    const Vec2<T>& deep = f.b[ax.deep];
+    r.witness_b = deep + f.origin;
+    r.witness_a = deep + ax.overlap * u + f.origin;
+    r.feature_a = input_feature(f.ta, {Feature::Type::Edge, static_cast<std::uint8_t>(ax.axis)});
+    r.feature_b = input_feature(f.tb, {Feature::Type::Vertex, static_cast<std::uint8_t>(ax.deep)});
+  } else {  // B's face, A's deepest vertex
+    const Vec2<T>& deep = f.a[ax.deep];
+    r.witness_a = deep + f.origin;
+    r.witness_b = deep - ax.overlap * u + f.origin;
+    r.feature_a = input_feature(f.ta, {Feature::Type::Vertex, static_cast<std::uint8_t>(ax.deep)});
+    r.feature_b =
+        input_feature(f.tb, {Feature::Type::Edge, static_cast<std::uint8_t>(ax.axis - 3)});
+  }
+}
+
+// A pair proven apart: the exact distance and closest features, as the level asks.
+template <class T>
+void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r) {
+  if (level == Level::Overlap) return;
+  const Closest<T> c = closest_features(f);
+  r.separation = c.distance;
+  r.depth = 0;
+  r.normal = c.normal;
+  if (level == Level::Depth) return;
+  r.witness_a = c.point_a + f.origin;
+  r.witness_b = c.point_b + f.origin;
+  r.feature_a = input_feature(f.ta, c.feature_a);
+  r.feature_b = input_feature(f.tb, c.feature_b);
+}
+
+// Box2D's reference-face rule: B's best face only when it beats A's by more than the hysteresis.
+template <class T>
+inline const AxisOverlap<T>& pick_reference(const AxisOverlap<T>& best_a,
+                                            const AxisOverlap<T>& best_b, T hysteresis) {
+  return best_b.overlap < best_a.overlap - hysteresis ? best_b : best_a;
+}
+
+// The manifold on `reference`, when its separation is within the margin.
+template <class T>
+void fill_manifold(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T>& reference,
+                   Result<T>& r) {
+  if (q.level != Level::Manifold || -reference.overlap > q.margin) return;
+  r.manifold = clip_manifold(f, reference.axis, q.margin);
+}
+
+// The whole answer of a method that settles on one axis (`ax.overlap` > 0: penetrating); the
+// manifold, when asked for, is built on that axis's face.
+template <class T>
+Result<T> answer_from_axis(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T>& ax) {
+  Result<T> r;
+  r.status = classify(ax.overlap, touching_band(f));
+  fill_from_axis(f, q.level, ax, r);
+  fill_manifold(f, q, ax, r);
+  return r;
+}
+
+}  // namespace dyop::detail

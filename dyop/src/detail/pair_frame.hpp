@@ -1,0 +1,39 @@
+#pragma once
+// Internal: a pair of triangles moved into a common local frame.
+//
+// Every method subtracts A's first CCW vertex from all six vertices before any arithmetic, so the
+// rounding error of a dot product is relative to the pair's extent, not to the distance from the
+// world origin (a pair a million units away is as accurate as one at the origin). Results are
+// moved back by adding `origin`.
+
+#include <algorithm>
+#include <array>
+
+#include "dyop/triangle.hpp"
+
+namespace dyop::detail {
+
+template <class T>
+struct PairFrame {
+  const Triangle<T>& ta;
+  const Triangle<T>& tb;
+  Vec2<T> origin;
+  std::array<Vec2<T>, 3> a;  // A's CCW vertices, local
+  std::array<Vec2<T>, 3> b;  // B's CCW vertices, local
+  T scale;                   // the larger triangle's size: unit of relative tolerances
+
+  PairFrame(const Triangle<T>& ta_, const Triangle<T>& tb_)
+      : ta(ta_), tb(tb_), origin(ta_.vertex(0)), scale(std::max(ta_.size(), tb_.size())) {
+    for (int i = 0; i < 3; ++i) {
+      a[i] = ta.vertex(i) - origin;
+      b[i] = tb.vertex(i) - origin;
+    }
+  }
+
+  // Axis k: 0..2 are A's edge normals, 3..5 B's negated edge normals. `axis(k)` points from A to B.
+  Vec2<T> axis(int k) const { return k < 3 ? ta.normal(k) : Vec2<T>(-tb.normal(k - 3)); }
+};
+
+inline int next3(int i) { return i == 2 ? 0 : i + 1; }
+
+}  // namespace dyop::detail

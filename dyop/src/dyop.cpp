@@ -1,0 +1,65 @@
+#include "dyop/dyop.hpp"
+
+#include "detail/certify_axes.hpp"
+#include "detail/pivot.hpp"
+
+namespace dyop {
+
+template <class T>
+Result<T> dyop(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {
+  const detail::PairFrame<T> f(a, b);
+  const Vec2<T> pivot = detail::pivot_point(f);
+  // A into B is judged on B's edge nearest the pivot, B into A on A's: those two axes go first.
+  const int edge_b = detail::nearest_edge(b, f.b, pivot);
+  const int edge_a = detail::nearest_edge(a, f.a, pivot);
+  return detail::certify_axes(f, query, 3 + edge_b, edge_a);
+}
+
+namespace {
+
+// True when `p` is strictly inside triangle `t` (local vertices `verts`): orientation signs
+// against every edge, never the paper's comparison of area sums.
+template <class T>
+bool strictly_inside(const Triangle<T>& t, const std::array<Vec2<T>, 3>& verts, const Vec2<T>& p) {
+  for (int j = 0; j < 3; ++j) {
+    if (t.normal(j).dot(p - verts[j]) >= 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+template <class T>
+Result<T> dyop_fast(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {
+  const detail::PairFrame<T> f(a, b);
+  const Vec2<T> pivot = detail::pivot_point(f);
+
+  // One direction each way: the pivot's vertex of one triangle against the pivot's edge of the
+  // other, as a signed distance from the edge line in normal form (negative: inside the line).
+  detail::AxisOverlap<T> a_into_b;
+  const int edge_b = detail::nearest_edge(b, f.b, pivot);
+  a_into_b.axis = 3 + edge_b;
+  a_into_b.deep = detail::nearest_vertex(f.a, pivot);
+  a_into_b.overlap = -b.normal(edge_b).dot(f.a[a_into_b.deep] - f.b[edge_b]);
+  const bool a_inside = strictly_inside(b, f.b, f.a[a_into_b.deep]);
+
+  detail::AxisOverlap<T> b_into_a;
+  const int edge_a = detail::nearest_edge(a, f.a, pivot);
+  b_into_a.axis = edge_a;
+  b_into_a.deep = detail::nearest_vertex(f.b, pivot);
+  b_into_a.overlap = -a.normal(edge_a).dot(f.b[b_into_a.deep] - f.a[edge_a]);
+  const bool b_inside = strictly_inside(a, f.a, f.b[b_into_a.deep]);
+
+  return detail::answer_from_axis(
+      f, query, detail::choose_direction(a_into_b, a_inside, b_into_a, b_inside));
+}
+
+template Result<float> dyop(const Triangle<float>&, const Triangle<float>&, const Query<float>&);
+template Result<double> dyop(const Triangle<double>&, const Triangle<double>&,
+                             const Query<double>&);
+template Result<float> dyop_fast(const Triangle<float>&, const Triangle<float>&,
+                                 const Query<float>&);
+template Result<double> dyop_fast(const Triangle<double>&, const Triangle<double>&,
+                                  const Query<double>&);
+
+}  // namespace dyop

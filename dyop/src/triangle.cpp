@@ -1,0 +1,54 @@
+#include "dyop/triangle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyop {
+
+const char* describe(TriangleError e) {
+  switch (e) {
+    case TriangleError::None: return "valid triangle";
+    case TriangleError::NonFinite: return "non-finite coordinate (NaN or infinity)";
+    case TriangleError::RepeatedVertex: return "repeated vertex (two vertices are equal)";
+    case TriangleError::Degenerate:
+      return "degenerate triangle (vertices collinear within the flatness tolerance)";
+  }
+  return "unknown triangle error";
+}
+
+template <class T>
+TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2) {
+  TriangleOrError<T> out;
+  if (!p0.allFinite() || !p1.allFinite() || !p2.allFinite()) {
+    out.error = TriangleError::NonFinite;
+    return out;
+  }
+  if (p0 == p1 || p1 == p2 || p2 == p0) {
+    out.error = TriangleError::RepeatedVertex;
+    return out;
+  }
+  // Edges are differences of the inputs, so the test is invariant under translation.
+  const Vec2<T> e01 = p1 - p0;
+  const Vec2<T> e12 = p2 - p1;
+  const Vec2<T> e20 = p0 - p2;
+  const T longest_sq = std::max({e01.squaredNorm(), e12.squaredNorm(), e20.squaredNorm()});
+  const T twice_area = cross(e01, Vec2<T>(p2 - p0));
+  if (!(std::abs(twice_area) > degenerate_tolerance<T>() * longest_sq)) {
+    out.error = TriangleError::Degenerate;  // also catches overflow of the squared lengths
+    return out;
+  }
+  Triangle<T>& t = out.triangle;
+  t.flipped_ = twice_area < 0;
+  t.v_ = {p0, t.flipped_ ? p2 : p1, t.flipped_ ? p1 : p2};
+  for (int i = 0; i < 3; ++i) {
+    const Vec2<T> e = t.v_[(i + 1) % 3] - t.v_[i];
+    t.n_[i] = right_perp(e) / e.norm();
+  }
+  t.size_ = std::sqrt(longest_sq);
+  return out;
+}
+
+template class Triangle<float>;
+template class Triangle<double>;
+
+}  // namespace dyop

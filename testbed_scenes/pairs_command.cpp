@@ -1,0 +1,93 @@
+#include "pairs_command.hpp"
+
+#include <cstdio>
+#include <istream>
+#include <ostream>
+#include <string>
+
+#include "pair_csv.hpp"
+
+namespace dyop::cli {
+namespace {
+
+// The CSV line in columns for the table: fields split on commas outside the quoted message.
+void write_table_line(std::ostream& out, const std::string& method, const std::string& csv) {
+  std::string cells[8];
+  int k = 0;
+  for (std::size_t i = 0; i < csv.size(); ++i) {
+    if (k == 7) {
+      cells[7] = csv.substr(i);
+      break;
+    }
+    if (csv[i] == ',') {
+      ++k;
+    } else {
+      cells[k] += csv[i];
+    }
+  }
+  auto shorten = [](const std::string& s) {  // 9 digits are plenty for reading
+    if (s.empty() || s.find_first_of("0123456789") == std::string::npos) return s;
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", std::stod(s));
+    return std::string(buffer);
+  };
+  char line[256];
+  std::snprintf(line, sizeof line, "%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  ",
+                cells[0].c_str(), method.c_str(), cells[1].c_str(), cells[2].c_str(),
+                shorten(cells[3]).c_str(), shorten(cells[4]).c_str(), shorten(cells[5]).c_str(),
+                shorten(cells[6]).c_str());
+  out << line << cells[7] << '\n';
+}
+
+}  // namespace
+
+PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostream& out) {
+  PairsSummary summary;
+  const bool several = options.backends.size() > 1;
+  if (options.table) {
+    char header[256];
+    std::snprintf(header, sizeof header, "%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  %s",
+                  "row", "method", "status", "overlap", "depth", "separation", "nx", "ny",
+                  "message");
+    out << header << '\n';
+  } else {
+    out << (several ? "method," : "") << pair_csv_header() << '\n';
+  }
+  auto emit = [&](const PairBackend& backend, const std::string& csv, bool ok) {
+    ++summary.rows;
+    ++(ok ? summary.ok : summary.errors);
+    if (options.table) {
+      write_table_line(out, backend.name, csv);
+    } else {
+      out << (several ? backend.name + "," : std::string()) << csv << '\n';
+    }
+  };
+
+  std::string text;
+  for (int row = 1; std::getline(in, text); ++row) {
+    const PairLine line = parse_pair_line(text);
+    if (line.kind == PairLine::Kind::Skip) continue;
+    if (line.kind == PairLine::Kind::Error) {
+      for (const PairBackend& b : options.backends) emit(b, format_error_line(row, line.message), false);
+      continue;
+    }
+    // Built once per precision: a float-only backend runs in float even in a double run.
+    const PairTriangles<double> in_double = make_pair_triangles<double>(line.values);
+    const PairTriangles<float> in_float = make_pair_triangles<float>(line.values);
+    for (const PairBackend& b : options.backends) {
+      const bool use_float = options.use_float || b.run_double == nullptr;
+      const std::string& message = use_float ? in_float.message : in_double.message;
+      if (!message.empty()) {
+        emit(b, format_error_line(row, message), false);
+        continue;
+      }
+      const Result<double> r =
+          use_float ? widen(b.run_float(in_float.a.triangle, in_float.b.triangle))
+                    : b.run_double(in_double.a.triangle, in_double.b.triangle);
+      emit(b, format_result_line(row, r), r.status != Status::Invalid);
+    }
+  }
+  return summary;
+}
+
+}  // namespace dyop::cli

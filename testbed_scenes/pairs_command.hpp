@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// `dyop pairs`: runs backends over the pair CSV (contract in `pair_csv.hpp`).
+
+#include <iosfwd>
+#include <vector>
+
+#include "pair_backend.hpp"
+
+namespace dyop::cli {
+
+struct PairsOptions {
+  std::vector<PairBackend> backends;  ///< one: the CSV contract; several: a `method` column first
+  bool use_float = false;  ///< convert input to float and run the float instantiation
+  bool table = false;      ///< aligned human-readable table instead of CSV
+};
+
+/// Output lines written, and how many of them are errors.
+struct PairsSummary {
+  int rows = 0;
+  int ok = 0;
+  int errors = 0;
+};
+
+/// Reads every line of `in`, writes one output line per data line and backend; never stops on a
+/// bad line.
+PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostream& out);
+
+}  // namespace dyop::cli

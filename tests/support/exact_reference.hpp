@@ -1,0 +1,20 @@
+#pragma once
+// The exact reference: penetration depth and distance of two triangles computed with exact
+// rational arithmetic (GMP) on the given doubles, rounded once at the end.
+//
+// Depth = min over the six Minkowski-difference axes of overlap; each overlap is N/sqrt(L) with N
+// and L exact rationals, evaluated as a 256-bit float (rounding far below double's). Distance when
+// apart = the least of the 18 exact vertex–segment distances.
+
+#include "support/pair_classes.hpp"
+
+namespace dyop::testing {
+
+struct ExactAnswer {
+  double separation = 0;  // signed: -depth when penetrating, the distance when apart
+  int sign = 0;           // exact sign of the separation: -1 penetrating, 0 touching, +1 apart
+};
+
+ExactAnswer exact_separation(const RawPair& p);
+
+}  // namespace dyop::testing
