@@ -63,6 +63,10 @@ PairLine parse_pair_line(std::string_view line) {
     // from_chars rejects a leading '+'; accept it as people write it.
     const char* begin = !field.empty() && field.front() == '+' ? field.data() + 1 : field.data();
     const auto parsed = std::from_chars(begin, end, value);
+    if (parsed.ec == std::errc::result_out_of_range && parsed.ptr == end) {
+      out.message = field_label(i) + " is out of range of double: '" + std::string(field) + "'";
+      return out;
+    }
     if (field.empty() || parsed.ec != std::errc() || parsed.ptr != end) {
       out.message = field_label(i) + " is not a number: '" + std::string(field) + "'";
       return out;

@@ -9,6 +9,8 @@ const char* describe(TriangleError e) {
   switch (e) {
     case TriangleError::None: return "valid triangle";
     case TriangleError::NonFinite: return "non-finite coordinate (NaN or infinity)";
+    case TriangleError::TooLarge:
+      return "coordinate too large (beyond max_coordinate: squared lengths would overflow)";
     case TriangleError::RepeatedVertex: return "repeated vertex (two vertices are equal)";
     case TriangleError::Degenerate:
       return "degenerate triangle (vertices collinear within the flatness tolerance)";
@@ -23,6 +25,12 @@ TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const
     out.error = TriangleError::NonFinite;
     return out;
   }
+  const T limit = max_coordinate<T>();
+  if (p0.cwiseAbs().maxCoeff() > limit || p1.cwiseAbs().maxCoeff() > limit ||
+      p2.cwiseAbs().maxCoeff() > limit) {
+    out.error = TriangleError::TooLarge;
+    return out;
+  }
   if (p0 == p1 || p1 == p2 || p2 == p0) {
     out.error = TriangleError::RepeatedVertex;
     return out;
@@ -34,7 +42,7 @@ TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const
   const T longest_sq = std::max({e01.squaredNorm(), e12.squaredNorm(), e20.squaredNorm()});
   const T twice_area = cross(e01, Vec2<T>(p2 - p0));
   if (!(std::abs(twice_area) > degenerate_tolerance<T>() * longest_sq)) {
-    out.error = TriangleError::Degenerate;  // also catches overflow of the squared lengths
+    out.error = TriangleError::Degenerate;
     return out;
   }
   Triangle<T>& t = out.triangle;
@@ -42,9 +50,10 @@ TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const
   t.v_ = {p0, t.flipped_ ? p2 : p1, t.flipped_ ? p1 : p2};
   for (int i = 0; i < 3; ++i) {
     const Vec2<T> e = t.v_[(i + 1) % 3] - t.v_[i];
-    t.n_[i] = right_perp(e) / e.norm();
+    t.len_[i] = e.norm();
+    t.n_[i] = right_perp(e) / t.len_[i];
   }
-  t.size_ = std::sqrt(longest_sq);
+  t.size_ = std::max({t.len_[0], t.len_[1], t.len_[2]});
   return out;
 }
 

@@ -2,12 +2,31 @@
 /// \file
 /// `epa`: GJK + EPA in 2D (van den Bergen 2001), what general engines use.
 ///
-/// GJK iterates a simplex of support points of the Minkowski difference A − B towards the origin:
-/// it ends with the distance when the origin is outside, or with a triangle enclosing the origin.
-/// EPA then expands that polygon towards the boundary of A − B, always splitting the edge closest
-/// to the origin, until the new support point does not move it further than `epa_tolerance`;
-/// that edge's distance is the depth and its normal the axis. Tolerances are relative to the
-/// pair's size. Computed in a local frame. Conventions: `dyop/result.hpp`.
+/// GJK iterates a simplex of support points of the Minkowski difference A − B (each a pair of
+/// vertex indices) towards the origin: it ends with the distance when the origin is outside, or
+/// with a triangle enclosing the origin. EPA then expands that polygon towards the boundary of
+/// A − B, always splitting the edge closest to the origin, until the new support point lies no
+/// farther than `epa_tolerance` beyond it; that edge's distance is the depth and its normal the
+/// axis. When GJK ends within the touching band of its simplex (origin on a segment, a vertex or
+/// a flat triangle), EPA starts from the simplex completed with supports on both sides, and its
+/// signed depth tells touching from penetrating. Computed in a local frame; tolerances are
+/// relative to the pair's size. Conventions: `dyop/result.hpp`.
+///
+/// What is EPA's own and what is borrowed:
+/// - `Level::Depth`: `separation`, `depth` and `normal` are EPA's (penetrating, touching) or
+///   GJK's (separated) own numbers, never recomputed on a candidate axis, so comparing them with
+///   `sat` measures this method's error.
+/// - Separated, `Level::Contact`: witnesses from the simplex's barycentric coordinates, features
+///   from its vertex pairs (a vertex or an edge of each triangle).
+/// - Penetrating or touching, `Level::Contact` and up: the candidate axis (an edge normal of A or
+///   a negated one of B) nearest to EPA's normal names the features and the deepest vertex, and
+///   `witness_a − witness_b` is EPA's depth along that axis.
+/// - `Level::Manifold`: clipped on the face of that nearest axis (separated pairs: nearest to
+///   GJK's normal); `face_hysteresis` is not used.
+/// - `Level::Overlap`: GJK only, stopping at the first support point that proves a gap wider
+///   than the touching band or at an enclosing simplex whose edges are all farther than it; EPA
+///   runs only when the origin is within the band of the simplex's boundary.
+/// - `iterations`: support evaluations of GJK plus those of EPA, at most 2·`epa_max_iterations`.
 
 #include "dyop/result.hpp"
 #include "dyop/triangle.hpp"
@@ -17,6 +36,8 @@ namespace dyop {
 /// Relative convergence tolerance of GJK and EPA (times the larger triangle's size). Why: the
 /// Minkowski difference of two triangles has at most 6 edges, so EPA ends exactly after a few
 /// steps; the tolerance only has to absorb the rounding of a support dot product, a few eps.
+/// The same length also makes two support points one point and a simplex triangle flat (height
+/// below it): both are the rounding of a difference of vertices, a few eps of the size.
 template <class T>
 constexpr T epa_tolerance() {
   return T(16) * Eigen::NumTraits<T>::epsilon();

@@ -10,7 +10,9 @@
 /// - Normals are unit and point out of the triangle.
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "dyop/vec2.hpp"
 
@@ -20,6 +22,7 @@ namespace dyop {
 enum class TriangleError : std::uint8_t {
   None,            ///< a valid triangle
   NonFinite,       ///< a coordinate is NaN or infinite
+  TooLarge,        ///< a coordinate beyond `max_coordinate`: squared lengths would overflow
   RepeatedVertex,  ///< two vertices are equal
   Degenerate,      ///< (nearly) collinear: see `degenerate_tolerance`
 };
@@ -35,6 +38,14 @@ const char* describe(TriangleError e);
 template <class T>
 constexpr T degenerate_tolerance() {
   return T(64) * Eigen::NumTraits<T>::epsilon();
+}
+
+/// Largest coordinate magnitude accepted. Why: validation and every method square edge lengths
+/// and differences of coordinates; below sqrt(max)/8 no such square overflows. double: 1.7e153,
+/// float: 2.3e18.
+template <class T>
+inline T max_coordinate() {
+  return std::sqrt(std::numeric_limits<T>::max()) / T(8);
 }
 
 template <class T>
@@ -55,6 +66,10 @@ class Triangle {
   const Vec2<T>& vertex(int i) const { return v_[i]; }
   /// Unit outward normal of CCW edge `i` (from vertex `i` to vertex `i+1`).
   const Vec2<T>& normal(int i) const { return n_[i]; }
+  /// Length of CCW edge `i`.
+  T edge_length(int i) const { return len_[i]; }
+  /// Unit direction of CCW edge `i` (from vertex `i` to vertex `i+1`): the normal turned left.
+  Vec2<T> tangent(int i) const { return Vec2<T>(-n_[i].y(), n_[i].x()); }
   /// Length of the longest edge: the triangle's size, the unit of its relative tolerances.
   T size() const { return size_; }
   /// True when the caller gave the vertices clockwise.
@@ -70,6 +85,7 @@ class Triangle {
 
   std::array<Vec2<T>, 3> v_{};
   std::array<Vec2<T>, 3> n_{};
+  std::array<T, 3> len_{};
   T size_ = 0;
   bool flipped_ = false;
 };

@@ -12,13 +12,16 @@ struct AxisOverlap {
   int deep = 0;     // CCW index of the other triangle's vertex that realises it
 };
 
-// Index and value of the smallest of three.
+// Index and value of the smallest of three (first on ties). Written as selects, not branches:
+// on random pairs the comparison outcome is unpredictable.
 template <class T>
 inline void min3(T d0, T d1, T d2, T& value, int& index) {
-  index = 0;
-  value = d0;
-  if (d1 < value) { value = d1; index = 1; }
-  if (d2 < value) { value = d2; index = 2; }
+  const bool one = d1 < d0;
+  T m = one ? d1 : d0;
+  int k = one ? 1 : 0;
+  const bool two = d2 < m;
+  value = two ? d2 : m;
+  index = two ? 2 : k;
 }
 
 // Axis of A's edge i: the edge line is A's support; B's deepest vertex is the least along n.

@@ -21,27 +21,28 @@ Vec2<T> pivot_point(const PairFrame<T>& f) {
 // CCW index of the vertex of `verts` nearest to `p`.
 template <class T>
 int nearest_vertex(const std::array<Vec2<T>, 3>& verts, const Vec2<T>& p) {
-  int best = 0;
-  T best_sq = (verts[0] - p).squaredNorm();
-  for (int i = 1; i < 3; ++i) {
-    const T d = (verts[i] - p).squaredNorm();
-    if (d < best_sq) { best_sq = d; best = i; }
-  }
-  return best;
+  T least;
+  int index;
+  min3((verts[0] - p).squaredNorm(), (verts[1] - p).squaredNorm(), (verts[2] - p).squaredNorm(),
+       least, index);
+  return index;
 }
 
-// CCW index of the edge of triangle `t` (local vertices `verts`) nearest to `p`.
+// CCW index of the edge of triangle `t` (local vertices `verts`) nearest to `p`: the squared
+// distance to each segment, clamped along the stored unit tangent without branches.
 template <class T>
 int nearest_edge(const Triangle<T>& t, const std::array<Vec2<T>, 3>& verts, const Vec2<T>& p) {
-  int best = 0;
-  T best_sq = std::numeric_limits<T>::infinity();
+  T d[3];
   for (int j = 0; j < 3; ++j) {
-    Vec2<T> c;
-    Feature fe;
-    const T d = closest_on_edge(verts, j, t.normal(j), p, c, fe);
-    if (d < best_sq) { best_sq = d; best = j; }
+    const Vec2<T> w = p - verts[j];
+    const Vec2<T> u = t.tangent(j);
+    const T along = std::min(std::max(u.dot(w), T(0)), t.edge_length(j));
+    d[j] = (w - along * u).squaredNorm();
   }
-  return best;
+  T least;
+  int index;
+  min3(d[0], d[1], d[2], least, index);
+  return index;
 }
 
 // The pivot heuristic's verdict from its two directions (vertex of one against edge of the other;

@@ -1,0 +1,146 @@
+// `dyop pairs`: the CSV contract, line by line, with good and bad lines mixed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pair_csv.hpp"
+#include "pairs_command.hpp"
+
+namespace dyop::cli {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+PairBackend backend(const std::string& name) {
+  for (const PairBackend& b : pair_backends()) {
+    if (b.name == name) return b;
+  }
+  ADD_FAILURE() << "no backend " << name;
+  return {};
+}
+
+TEST(PairCsv, ParsesTwelveNumbersWithSpacesSignsAndWindowsLineEnds) {
+  const PairLine l = parse_pair_line(" 0, +1.5 ,-2e3,3,4,5,6,7,8,9,10,11\r");
+  ASSERT_EQ(l.kind, PairLine::Kind::Data);
+  EXPECT_EQ(l.values[1], 1.5);
+  EXPECT_EQ(l.values[2], -2000);
+  EXPECT_EQ(l.values[11], 11);
+}
+
+TEST(PairCsv, BlankAndCommentLinesAreSkipped) {
+  EXPECT_EQ(parse_pair_line("").kind, PairLine::Kind::Skip);
+  EXPECT_EQ(parse_pair_line("   \t").kind, PairLine::Kind::Skip);
+  EXPECT_EQ(parse_pair_line("# ax,ay,...").kind, PairLine::Kind::Skip);
+}
+
+TEST(PairCsv, EveryMalformedLineNamesWhatIsWrong) {
+  const struct {
+    const char* line;
+    const char* says;
+  } cases[] = {
+      {"1,2,3", "expected 12 comma-separated fields, got 3"},
+      {"1,2,3,4,5,6,7,8,9,10,11,12,13", "got 13"},
+      {"1,2,3,4,5,x,7,8,9,10,11,12", "field 6 (cy) is not a number: 'x'"},
+      {"1,2,3,4,5,6,7,8,9,10,11,", "field 12 (ry) is not a number: ''"},
+      {"1,2,3,4,5,6,nan,8,9,10,11,12", "field 7 (px) is not finite"},
+      {"1,2,3,4,5,6,7,8,inf,10,11,12", "field 9 (qx) is not finite"},
+      {"1,2,3,4,5,6,7,8,9,1e999,11,12", "field 10 (qy) is out of range of double"},
+  };
+  for (const auto& c : cases) {
+    const PairLine l = parse_pair_line(c.line);
+    EXPECT_EQ(l.kind, PairLine::Kind::Error) << c.line;
+    EXPECT_NE(l.message.find(c.says), std::string::npos) << c.line << " -> " << l.message;
+  }
+}
+
+TEST(PairCsv, DegenerateAndFloatOverflowingTrianglesAreErrorsNamingTheTriangle) {
+  const std::array<double, pair_fields> collinear{0, 0, 1, 1, 2, 2, 0, 0, 1, 0, 0, 1};
+  EXPECT_NE(make_pair_triangles<double>(collinear).message.find("triangle ABC"),
+            std::string::npos);
+  const std::array<double, pair_fields> repeated{0, 0, 1, 0, 0, 1, 5, 5, 5, 5, 6, 6};
+  EXPECT_NE(make_pair_triangles<double>(repeated).message.find("triangle PQR"),
+            std::string::npos);
+  const std::array<double, pair_fields> huge{0, 0, 1e300, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  EXPECT_NE(make_pair_triangles<double>(huge).message.find("too large"), std::string::npos);
+  const std::array<double, pair_fields> beyond_float{0, 0, 1e39, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  EXPECT_NE(make_pair_triangles<float>(beyond_float).message.find("field 3 (bx)"),
+            std::string::npos);
+}
+
+TEST(PairsCommand, EveryInputLineIsAccountedForInOrderWithItsLineNumber) {
+  const std::string input =
+      "# header comment\n"
+      "0,0, 4,0, 2,4,  2,0.5, 1,-2, 3,-2\n"  // line 2: penetrating by 0.5
+      "\n"
+      "0,0,1,0,0,1\n"                        // line 4: too few fields
+      "0,0, 1,0, 0,1,  2,0, 3,0, 2,1\n"      // line 5: apart by 1
+      "0,0, 1,1, 2,2,  2,0, 3,0, 2,1\n"      // line 6: degenerate
+      "0,0, 1,0, 0,1,  2,0, 3,0, 2,oops\n";  // line 7: not a number
+  std::istringstream in(input);
+  std::ostringstream out;
+  const PairsSummary s = run_pairs({{backend("sat")}, false, false}, in, out);
+  EXPECT_EQ(s.rows, 5);
+  EXPECT_EQ(s.ok, 2);
+  EXPECT_EQ(s.errors, 3);
+  const auto lines = lines_of(out.str());
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_EQ(lines[0], "row,status,overlap,depth,separation,nx,ny,message");
+  EXPECT_EQ(lines[1], "2,ok,1,0.5,-0.5,0,-1,");
+  EXPECT_EQ(lines[2].rfind("4,error,,,,,,\"expected 12", 0), 0u) << lines[2];
+  EXPECT_EQ(lines[3], "5,ok,0,0,1,0,0,");
+  EXPECT_EQ(lines[4].rfind("6,error,,,,,,\"triangle ABC", 0), 0u) << lines[4];
+  EXPECT_EQ(lines[5].rfind("7,error,,,,,,\"field 12 (ry)", 0), 0u) << lines[5];
+}
+
+TEST(PairsCommand, NumbersHaveSeventeenSignificantDigits) {
+  std::istringstream in("0,0, 3,0, 0,3,  0.9,0.9, 3,3, 1,4\n");
+  std::ostringstream out;
+  run_pairs({{backend("dyop")}, false, false}, in, out);
+  const auto lines = lines_of(out.str());
+  ASSERT_EQ(lines.size(), 2u);
+  // Depth along the hypotenuse: (3 - 0.9 - 0.9) / sqrt(2), printed "0.84852813742385..." in full.
+  const std::string depth = lines[1].substr(7, lines[1].find(',', 7) - 7);
+  EXPECT_EQ(depth.size(), 19u) << depth;  // "0." and 17 digits
+  EXPECT_NEAR(std::stod(depth), 1.2 / std::sqrt(2.0), 1e-15);
+}
+
+TEST(PairsCommand, FloatPrecisionRunsTheFloatInstantiation) {
+  std::istringstream in("0,0, 3,0, 0,3,  0.9,0.9, 3,3, 1,4\n");
+  std::ostringstream out;
+  run_pairs({{backend("sat")}, true, false}, in, out);
+  const auto lines = lines_of(out.str());
+  ASSERT_EQ(lines.size(), 2u);
+  const std::string depth = lines[1].substr(7, lines[1].find(',', 7) - 7);
+  EXPECT_EQ(static_cast<double>(static_cast<float>(std::stod(depth))), std::stod(depth))
+      << "a float result, widened: " << depth;
+  EXPECT_NEAR(std::stod(depth), 1.2 / std::sqrt(2.0), 1e-6);
+}
+
+TEST(PairsCommand, SeveralMethodsAddAMethodColumnAndOneLinePerMethod) {
+  std::istringstream in("0,0, 1,0, 0,1,  2,0, 3,0, 2,1\n");
+  std::ostringstream out;
+  const PairsSummary s = run_pairs({pair_backends(), false, false}, in, out);
+  const auto lines = lines_of(out.str());
+  EXPECT_EQ(lines[0].rfind("method,row,status", 0), 0u);
+  EXPECT_EQ(lines.size(), pair_backends().size() + 1);
+  EXPECT_EQ(s.rows, static_cast<int>(pair_backends().size()));
+}
+
+TEST(PairsCommand, MethodThatCannotHandleAPairReportsAnErrorLineWithItsReason) {
+  std::istringstream in("0,0, 0,2, -2,1,  -0.2,1, 2,0.5, 2,1.5\n");  // pivot edge x = 0
+  std::ostringstream out;
+  const PairsSummary s = run_pairs({{backend("dyop-paper")}, false, false}, in, out);
+  EXPECT_EQ(s.errors, 1);
+  EXPECT_NE(out.str().find("1,error"), std::string::npos) << out.str();
+}
+
+}  // namespace
+}  // namespace dyop::cli
