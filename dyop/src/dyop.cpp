@@ -3,19 +3,36 @@
 #include "detail/certify_axes.hpp"
 #include "detail/pivot.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace dyop {
 
-template <class T>
-Result<T> dyop(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {
-  const detail::PairFrame<T> f(a, b);
-  const Vec2<T> pivot = detail::pivot_point(f);
-  // A into B is judged on B's edge nearest the pivot, B into A on A's: those two axes go first.
-  const int edge_b = detail::nearest_edge(b, f.b, pivot);
-  const int edge_a = detail::nearest_edge(a, f.a, pivot);
-  return detail::certify_axes(f, query, 3 + edge_b, edge_a);
-}
-
 namespace {
+
+// The pivot's own answer to "which features are closest" for a pair found apart: A's vertex
+// nearest the pivot against B's edge nearest it, and the other way round. The guess is certified
+// by duality: the distance is at least the gap along any unit axis, so when the gap along the
+// candidate's direction equals its length the candidate is the distance. Otherwise, the full
+// search decides.
+template <class T>
+struct PivotFeatures {
+  detail::Closest<T> operator()(const detail::PairFrame<T>& f) const {
+    const Vec2<T> pivot = detail::pivot_point(f);
+    const int edge_a = detail::nearest_edge(f.ta, f.a, pivot);
+    const int edge_b = detail::nearest_edge(f.tb, f.b, pivot);
+    detail::Closest<T> c;
+    T sq = std::numeric_limits<T>::infinity();
+    detail::consider_a_vertex(f, detail::nearest_vertex(f.a, pivot), edge_b, c, sq);
+    detail::consider_b_vertex(f, detail::nearest_vertex(f.b, pivot), edge_a, c, sq);
+    detail::finish_closest(c, sq);
+    const Vec2<T>& u = c.normal;
+    const T gap = std::min({u.dot(f.b[0]), u.dot(f.b[1]), u.dot(f.b[2])}) -
+                  std::max({u.dot(f.a[0]), u.dot(f.a[1]), u.dot(f.a[2])});
+    if (gap >= c.distance - detail::touching_band(f)) return c;
+    return detail::closest_features(f);
+  }
+};
 
 // True when `p` is strictly inside triangle `t` (local vertices `verts`): orientation signs
 // against every edge, never the paper's comparison of area sums.
@@ -28,6 +45,26 @@ bool strictly_inside(const Triangle<T>& t, const std::array<Vec2<T>, 3>& verts, 
 }
 
 }  // namespace
+
+template <class T>
+Result<T> dyop(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {
+  const detail::PairFrame<T> f(a, b);
+  if (query.level == Level::Overlap) {
+    // Only the yes/no answer is wanted: the pivot's axes first (A into B is judged on B's edge
+    // nearest the pivot, B into A on A's), and out as soon as one separates.
+    const Vec2<T> pivot = detail::pivot_point(f);
+    const int edge_b = detail::nearest_edge(b, f.b, pivot);
+    const int edge_a = detail::nearest_edge(a, f.a, pivot);
+    const T band = detail::touching_band(f);
+    if (detail::overlap_on_b_edge(f, edge_b).overlap < -band ||
+        detail::overlap_on_a_edge(f, edge_a).overlap < -band) {
+      Result<T> r;
+      r.status = Status::Separated;
+      return r;
+    }
+  }
+  return detail::certify_axes(f, query, PivotFeatures<T>{});
+}
 
 template <class T>
 Result<T> dyop_fast(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {

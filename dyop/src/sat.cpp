@@ -6,7 +6,7 @@ namespace dyop {
 
 template <class T>
 Result<T> sat(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query) {
-  return detail::certify_axes(detail::PairFrame<T>(a, b), query, 0, 1);
+  return detail::certify_axes(detail::PairFrame<T>(a, b), query);
 }
 
 template Result<float> sat(const Triangle<float>&, const Triangle<float>&, const Query<float>&);

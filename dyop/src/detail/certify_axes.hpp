@@ -1,42 +1,35 @@
 #pragma once
 // Internal: exact penetration depth by certifying all six candidate axes.
 //
-// `sat` and `dyop` share this: the set of axes and their arithmetic are the same, so both are
-// exact and give bit-identical answers. The only use of an order is the early exit of the
-// `Overlap` level, which tries `first` and `second` (dyop: the pivot's two axes) before the rest.
-// Every other level needs all six overlaps of a touching or penetrating pair, so they are
-// computed without branching on their values (the outcomes are unpredictable on real inputs).
+// `sat` and `dyop` share this, so both are exact and their depths bit-identical. The six overlaps
+// are computed together, lane-wise and without branches on the data: on two triangles that is
+// cheaper than trying the axes one by one in any order. `find` locates the closest features of a
+// pair found apart (dyop passes its pivot's guess, certified; sat passes the full search).
 
 #include "detail/finish.hpp"
 
 namespace dyop::detail {
 
-template <class T>
-inline const AxisOverlap<T>& least_of(const AxisOverlap<T>& x, const AxisOverlap<T>& y) {
-  return y.overlap < x.overlap ? y : x;  // ties keep x, the lower axis index
-}
-
-template <class T>
-Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, int first, int second) {
-  const T band = touching_band(f);
+template <class T, class Find = AllFeatures<T>>
+Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& find = {}) {
+  const std::array<T, 6> overlap = all_overlaps(f);
+  const int best_a = argmin3(overlap, 0);
+  const int best_b = argmin3(overlap, 3);
+  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
   Result<T> r;
-  if (q.level == Level::Overlap && (overlap_on_axis(f, first).overlap < -band ||
-                                    overlap_on_axis(f, second).overlap < -band)) {
-    r.status = Status::Separated;
-    return r;
-  }
-  const AxisOverlap<T> best_a = least_of(
-      least_of(overlap_on_a_edge(f, 0), overlap_on_a_edge(f, 1)), overlap_on_a_edge(f, 2));
-  const AxisOverlap<T> best_b = least_of(
-      least_of(overlap_on_b_edge(f, 0), overlap_on_b_edge(f, 1)), overlap_on_b_edge(f, 2));
-  const AxisOverlap<T>& least = least_of(best_a, best_b);
-  r.status = classify(least.overlap, band);
+  r.status = classify(overlap[least], touching_band(f));
   if (r.status == Status::Separated) {
-    fill_separated(f, q.level, r);
+    fill_separated(f, q.level, r, find);
+  } else if (q.level >= Level::Contact) {
+    // The same arithmetic again on one axis, now keeping the deep vertex.
+    fill_from_axis(f, q.level, overlap_on_axis(f, least), r);
   } else {
-    fill_from_axis(f, q.level, least, r);
+    fill_from_axis(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
   }
-  fill_manifold(f, q, pick_reference(best_a, best_b, q.face_hysteresis), r);
+  fill_manifold(f, q,
+                pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
+                               AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
+                r);
   return r;
 }
 

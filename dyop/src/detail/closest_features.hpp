@@ -50,6 +50,47 @@ inline T closest_on_edge(const std::array<Vec2<T>, 3>& verts, int j, const Vec2<
   return h * h;
 }
 
+// Keeps in `best` the nearer of its current pair and A's vertex `i` against B's edge `j`.
+template <class T>
+inline void consider_a_vertex(const PairFrame<T>& f, int i, int j, Closest<T>& best, T& best_sq) {
+  Vec2<T> c;
+  Feature fe;
+  const T d = closest_on_edge(f.b, j, f.tb.normal(j), f.a[i], c, fe);
+  if (d < best_sq) {
+    best_sq = d;
+    best.point_a = f.a[i];
+    best.point_b = c;
+    best.feature_a = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
+    best.feature_b = fe;
+    best.normal = fe.type == Feature::Type::Edge ? Vec2<T>(-f.tb.normal(j)) : Vec2<T>::Zero();
+  }
+}
+
+// Keeps in `best` the nearer of its current pair and B's vertex `i` against A's edge `j`.
+template <class T>
+inline void consider_b_vertex(const PairFrame<T>& f, int i, int j, Closest<T>& best, T& best_sq) {
+  Vec2<T> c;
+  Feature fe;
+  const T d = closest_on_edge(f.a, j, f.ta.normal(j), f.b[i], c, fe);
+  if (d < best_sq) {
+    best_sq = d;
+    best.point_a = c;
+    best.point_b = f.b[i];
+    best.feature_a = fe;
+    best.feature_b = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
+    best.normal = fe.type == Feature::Type::Edge ? f.ta.normal(j) : Vec2<T>::Zero();
+  }
+}
+
+// The distance and, for a vertex–vertex pair, the normal along the joining line.
+template <class T>
+inline void finish_closest(Closest<T>& best, T best_sq) {
+  best.distance = std::sqrt(best_sq);
+  if (best.normal.isZero() && best.distance > 0) {
+    best.normal = (best.point_b - best.point_a) / best.distance;
+  }
+}
+
 // Distance of two triangles known to be apart (callers have a separating axis).
 template <class T>
 Closest<T> closest_features(const PairFrame<T>& f) {
@@ -57,35 +98,18 @@ Closest<T> closest_features(const PairFrame<T>& f) {
   T best_sq = std::numeric_limits<T>::infinity();
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      Vec2<T> c;
-      Feature fe;
-      // A's vertex i against B's edge j.
-      T d = closest_on_edge(f.b, j, f.tb.normal(j), f.a[i], c, fe);
-      if (d < best_sq) {
-        best_sq = d;
-        best.point_a = f.a[i];
-        best.point_b = c;
-        best.feature_a = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
-        best.feature_b = fe;
-        best.normal = fe.type == Feature::Type::Edge ? Vec2<T>(-f.tb.normal(j)) : Vec2<T>::Zero();
-      }
-      // B's vertex i against A's edge j.
-      d = closest_on_edge(f.a, j, f.ta.normal(j), f.b[i], c, fe);
-      if (d < best_sq) {
-        best_sq = d;
-        best.point_a = c;
-        best.point_b = f.b[i];
-        best.feature_a = fe;
-        best.feature_b = {Feature::Type::Vertex, static_cast<std::uint8_t>(i)};
-        best.normal = fe.type == Feature::Type::Edge ? f.ta.normal(j) : Vec2<T>::Zero();
-      }
+      consider_a_vertex(f, i, j, best, best_sq);
+      consider_b_vertex(f, i, j, best, best_sq);
     }
   }
-  best.distance = std::sqrt(best_sq);
-  if (best.normal.isZero() && best.distance > 0) {
-    best.normal = (best.point_b - best.point_a) / best.distance;
-  }
+  finish_closest(best, best_sq);
   return best;
 }
+
+// Callers that choose how to find the closest features pass one of these to the shared steps.
+template <class T>
+struct AllFeatures {
+  Closest<T> operator()(const PairFrame<T>& f) const { return closest_features(f); }
+};
 
 }  // namespace dyop::detail

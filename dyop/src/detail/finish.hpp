@@ -54,11 +54,12 @@ void fill_from_axis(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax
   }
 }
 
-// A pair proven apart: the exact distance and closest features, as the level asks.
-template <class T>
-void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r) {
+// A pair proven apart: the exact distance and closest features (found by `find`, by default
+// all 18 vertex–edge pairs), as the level asks.
+template <class T, class Find = AllFeatures<T>>
+void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r, const Find& find = {}) {
   if (level == Level::Overlap) return;
-  const Closest<T> c = closest_features(f);
+  const Closest<T> c = find(f);
   r.separation = c.distance;
   r.depth = 0;
   r.normal = c.normal;
