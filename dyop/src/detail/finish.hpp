@@ -54,12 +54,11 @@ void fill_from_axis(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax
   }
 }
 
-// A pair proven apart: the exact distance and closest features (found by `find`, by default
-// all 18 vertex–edge pairs), as the level asks.
-template <class T, class Find = AllFeatures<T>>
-void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r, const Find& find = {}) {
+// A pair proven apart, with its closest features `c`: distance and witnesses as the level asks.
+template <class T>
+void fill_closest(const PairFrame<T>& f, Level level, const Closest<T>& c, Result<T>& r) {
+  r.status = Status::Separated;
   if (level == Level::Overlap) return;
-  const Closest<T> c = find(f);
   r.separation = c.distance;
   r.depth = 0;
   r.normal = c.normal;
@@ -68,6 +67,15 @@ void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r, const Find
   r.witness_b = c.point_b + f.origin;
   r.feature_a = input_feature(f.ta, c.feature_a);
   r.feature_b = input_feature(f.tb, c.feature_b);
+}
+
+// A pair proven apart whose closest features are still to be found, by `find` (by default all
+// 18 vertex–edge pairs), only when the level asks for more than the status.
+template <class T, class Find = AllFeatures<T>>
+void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r, const Find& find = {}) {
+  r.status = Status::Separated;
+  if (level == Level::Overlap) return;
+  fill_closest(f, level, find(f), r);
 }
 
 // Box2D's reference-face rule: B's best face only when it beats A's by more than the hysteresis.
