@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "dyop/dyop_paper.hpp"
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 using V = Vec2<double>;
@@ -78,4 +78,4 @@ TEST(DyopPaper, EveryPairGetsFiniteNumbersOrAReason) {
 }
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

@@ -6,9 +6,9 @@
 
 #include "dyop/dyop.hpp"
 #include "dyop/sat.hpp"
-#include "support/exact_reference.hpp"
+#include "workloads/exact_reference.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 template <class T>
@@ -110,4 +110,4 @@ TEST(DyopFast, NeverCallsAnApartPairPenetratingAndNeverReturnsNaN) {
 }
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

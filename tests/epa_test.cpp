@@ -11,7 +11,7 @@
 
 #include "dyop/epa.hpp"
 #include "dyop/sat.hpp"
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
 namespace dyop {
 namespace {
@@ -277,10 +277,10 @@ TYPED_TEST(Epa, SwappingTheTrianglesReversesTheNormal) {
 // ---------------------------------------------------------------------------------------------
 // Randomized agreement with `sat` (double).
 
-using testing::all_pair_classes;
-using testing::build;
-using testing::PairClass;
-using testing::RawPair;
+using workloads::all_pair_classes;
+using workloads::build;
+using workloads::PairClass;
+using workloads::RawPair;
 
 // |epa − sat| / pair size on the separation. Measured (the summary this test prints, and 10 ×
 // 100 000 pairs on other seeds): at most 4e-16 in every class but near-parallel, 3.2e-15 there,
@@ -324,12 +324,12 @@ struct Figures {
 class EpaAgreesWithSat : public ::testing::TestWithParam<PairClass> {};
 
 TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
-  const std::vector<RawPair> pairs = testing::make_pairs(GetParam(), 3000, 20240611);
+  const std::vector<RawPair> pairs = workloads::make_pairs(GetParam(), 3000, 20240611);
   Figures fig;
   for (const RawPair& p : pairs) {
     const auto t = build<double>(p);
     ASSERT_TRUE(t.a.ok() && t.b.ok());
-    const double size = testing::pair_size(p);
+    const double size = workloads::pair_size(p);
     const Result<double> e = epa(t.a.triangle, t.b.triangle, {Level::Contact});
     const Result<double> s = sat(t.a.triangle, t.b.triangle, {Level::Contact});
     ASSERT_TRUE(finite(e));
@@ -373,7 +373,7 @@ TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
   std::printf(
       "%-16s pen %4d err max %.1e mean %.1e | sep %4d err max %.1e mean %.1e | status %d+%d | "
       "angle max %.1e ties %d | iterations mean %.2f max %d\n",
-      testing::name(GetParam()), fig.penetrating, fig.max_pen_error,
+      workloads::name(GetParam()), fig.penetrating, fig.max_pen_error,
       fig.penetrating ? fig.sum_pen_error / fig.penetrating : 0.0, fig.separated,
       fig.max_sep_error, fig.separated ? fig.sum_sep_error / fig.separated : 0.0,
       fig.status_disagreements, fig.band_disagreements, fig.max_angle, fig.ties,
@@ -382,7 +382,7 @@ TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
 
 INSTANTIATE_TEST_SUITE_P(EveryClass, EpaAgreesWithSat, ::testing::ValuesIn(all_pair_classes),
                          [](const ::testing::TestParamInfo<PairClass>& info) {
-                           std::string n = testing::name(info.param);
+                           std::string n = workloads::name(info.param);
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
@@ -390,15 +390,15 @@ INSTANTIATE_TEST_SUITE_P(EveryClass, EpaAgreesWithSat, ::testing::ValuesIn(all_p
 // Float: same classes, a looser bound (float's eps is 2^-23), and never a NaN.
 TEST(EpaFloat, AgreesWithSatInFloatOnRandomPairs) {
   for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : testing::make_pairs(c, 500, 7)) {
+    for (const RawPair& p : workloads::make_pairs(c, 500, 7)) {
       const auto t = build<float>(p);
       if (!t.a.ok() || !t.b.ok()) continue;  // a double sliver may be flat in float
       const Result<float> e = epa(t.a.triangle, t.b.triangle, {Level::Manifold});
       const Result<float> s = sat(t.a.triangle, t.b.triangle, {Level::Depth});
-      ASSERT_TRUE(finite(e)) << testing::name(c);
+      ASSERT_TRUE(finite(e)) << workloads::name(c);
       EXPECT_LE(e.iterations, 2 * epa_max_iterations);
-      const double size = testing::pair_size(p);
-      EXPECT_LE(std::abs(e.separation - s.separation), 1e-5 * size) << testing::name(c);
+      const double size = workloads::pair_size(p);
+      EXPECT_LE(std::abs(e.separation - s.separation), 1e-5 * size) << workloads::name(c);
     }
   }
 }

@@ -6,9 +6,9 @@
 
 #include "dyop/dyop.hpp"
 #include "dyop/sat.hpp"
-#include "support/exact_reference.hpp"
+#include "workloads/exact_reference.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 // The bound: within 1e-12 of the pair's size, in double, wherever the pair is.
@@ -57,4 +57,4 @@ INSTANTIATE_TEST_SUITE_P(EveryClass, ExactAgreement, ::testing::ValuesIn(all_pai
                          });
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

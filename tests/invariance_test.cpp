@@ -6,9 +6,9 @@
 #include <random>
 
 #include "dyop/method.hpp"
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 using V = Vec2<double>;
@@ -116,4 +116,4 @@ INSTANTIATE_TEST_SUITE_P(ExactMethods, Invariance,
                          });
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

@@ -11,9 +11,9 @@
 
 #include "dyop/lin_canny.hpp"
 #include "dyop/sat.hpp"
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 template <class T>
@@ -503,4 +503,4 @@ TEST(LinCannyRandom, IterationsStayWithinTheStepBoundAndNoResultIsNanOrInf) {
 }
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

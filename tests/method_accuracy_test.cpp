@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "dyop/method.hpp"
-#include "support/exact_reference.hpp"
+#include "workloads/exact_reference.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 constexpr int kPairsPerClass = 2000;
@@ -119,4 +119,4 @@ INSTANTIATE_TEST_SUITE_P(EveryMethod, MethodAccuracy, ::testing::ValuesIn(all_me
                          });
 
 }  // namespace
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

@@ -1,10 +1,10 @@
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 using V = Vec2<double>;
@@ -214,4 +214,4 @@ double pair_size(const RawPair& p) {
   return (hi - lo).norm();
 }
 
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

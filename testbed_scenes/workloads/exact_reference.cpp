@@ -1,10 +1,10 @@
-#include "support/exact_reference.hpp"
+#include "workloads/exact_reference.hpp"
 
 #include <gmpxx.h>
 
 #include <array>
 
-namespace dyop::testing {
+namespace dyop::workloads {
 namespace {
 
 using Q = mpq_class;
@@ -100,4 +100,4 @@ ExactAnswer exact_separation(const RawPair& p) {
   return out;
 }
 
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

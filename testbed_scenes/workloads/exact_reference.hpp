@@ -6,9 +6,9 @@
 // and L exact rationals, evaluated as a 256-bit float (rounding far below double's). Distance when
 // apart = the least of the 18 exact vertex–segment distances.
 
-#include "support/pair_classes.hpp"
+#include "workloads/pair_classes.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 
 struct ExactAnswer {
   double separation = 0;  // signed: -depth when penetrating, the distance when apart
@@ -17,4 +17,4 @@ struct ExactAnswer {
 
 ExactAnswer exact_separation(const RawPair& p);
 
-}  // namespace dyop::testing
+}  // namespace dyop::workloads

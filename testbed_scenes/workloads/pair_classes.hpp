@@ -8,7 +8,7 @@
 
 #include "dyop/triangle.hpp"
 
-namespace dyop::testing {
+namespace dyop::workloads {
 
 enum class PairClass {
   General,        // random triangles of size ~1, overlapping about a third of the time
@@ -56,4 +56,4 @@ BuiltPair<T> build(const RawPair& p) {
 /// The pair's size: the diagonal of the union of both bounding boxes (unit of relative errors).
 double pair_size(const RawPair& p);
 
-}  // namespace dyop::testing
+}  // namespace dyop::workloads
