@@ -1,0 +1,48 @@
+#pragma once
+// Prepared inputs for timing: the pairs of a bench class as valid triangles of one precision,
+// with what each method needs ready beforehand (as a simulation has its shapes ready), so that a
+// timed loop does nothing but the narrow phase.
+
+#include <cstdint>
+#include <vector>
+
+#include "dyop/lin_canny.hpp"
+#include "dyop/method.hpp"
+#include "workloads/bench_classes.hpp"
+
+#ifdef DYOP_WITH_BOX2D
+#include <box2d/b2_collision.h>
+#include <box2d/b2_polygon_shape.h>
+#endif
+
+namespace dyop::workloads {
+
+/// One bench class in precision T. Pairs whose triangles are invalid in T (a float-degenerate
+/// sliver) are left out; `raw` keeps the kept pairs, rounded to T, for the exact reference.
+template <class T>
+struct PairSet {
+  std::vector<RawPair> raw;        ///< the kept pairs as T sees them (rounded to T)
+  std::vector<Triangle<T>> a;      ///< A of each pair
+  std::vector<Triangle<T>> b;      ///< B of each pair
+  std::vector<Triangle<T>> b_next; ///< B after a small rigid motion: the next frame, for warm starts
+  std::size_t size() const { return a.size(); }
+};
+
+template <class T>
+PairSet<T> make_pair_set(BenchClass c, int count, std::uint64_t seed);
+
+#ifdef DYOP_WITH_BOX2D
+/// The same pairs as Box2D bodies would hold them: each triangle a `b2PolygonShape` about its own
+/// centroid (skin radius 0), placed by a translation.
+struct Box2DPairSet {
+  std::vector<b2PolygonShape> shape_a, shape_b;
+  std::vector<b2Transform> xf_a, xf_b;
+  std::size_t size() const { return shape_a.size(); }
+};
+Box2DPairSet make_box2d_pair_set(const PairSet<float>& set);
+#endif
+
+extern template PairSet<float> make_pair_set(BenchClass, int, std::uint64_t);
+extern template PairSet<double> make_pair_set(BenchClass, int, std::uint64_t);
+
+}  // namespace dyop::workloads
