@@ -48,30 +48,20 @@ inline AxisOverlap<T> overlap_on_b_edge(const PairFrame<T>& f, int j) {
   return r;
 }
 
-// The three overlaps on `own`'s edge normals at once, one SIMD lane per edge: for each vertex of
-// the other triangle a lane-wise dot product and a lane-wise minimum, no branch on the data.
-template <class T>
-inline Eigen::Array<T, 4, 1> overlaps_on_edges(const Triangle<T>& own,
-                                               const std::array<Vec2<T>, 3>& own_local,
-                                               const std::array<Vec2<T>, 3>& other_local) {
-  using Lanes = Eigen::Array<T, 4, 1>;
-  const Lanes nx(own.normal(0).x(), own.normal(1).x(), own.normal(2).x(), T(0));
-  const Lanes ny(own.normal(0).y(), own.normal(1).y(), own.normal(2).y(), T(0));
-  const Lanes px(own_local[0].x(), own_local[1].x(), own_local[2].x(), T(0));
-  const Lanes py(own_local[0].y(), own_local[1].y(), own_local[2].y(), T(0));
-  Lanes least = nx * other_local[0].x() + ny * other_local[0].y();
-  least = least.min(nx * other_local[1].x() + ny * other_local[1].y());
-  least = least.min(nx * other_local[2].x() + ny * other_local[2].y());
-  return nx * px + ny * py - least;
-}
-
 // All six overlaps (index k as in `AxisOverlap::axis`), without the deep vertices: what the
-// Depth level needs.
+// Depth level needs, computed with no branch on the data.
 template <class T>
 inline std::array<T, 6> all_overlaps(const PairFrame<T>& f) {
-  const Eigen::Array<T, 4, 1> on_a = overlaps_on_edges(f.ta, f.a, f.b);
-  const Eigen::Array<T, 4, 1> on_b = overlaps_on_edges(f.tb, f.b, f.a);
-  return {on_a[0], on_a[1], on_a[2], on_b[0], on_b[1], on_b[2]};
+  std::array<T, 6> out;
+  for (int i = 0; i < 3; ++i) {
+    const Vec2<T>& n = f.ta.normal(i);
+    out[i] = n.dot(f.a[i]) - std::min(std::min(n.dot(f.b[0]), n.dot(f.b[1])), n.dot(f.b[2]));
+  }
+  for (int j = 0; j < 3; ++j) {
+    const Vec2<T>& n = f.tb.normal(j);
+    out[3 + j] = n.dot(f.b[j]) - std::min(std::min(n.dot(f.a[0]), n.dot(f.a[1])), n.dot(f.a[2]));
+  }
+  return out;
 }
 
 // Index of the least of v[first], v[first+1], v[first+2] (the first on ties).
