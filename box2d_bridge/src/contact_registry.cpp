@@ -1,0 +1,37 @@
+#include "contact_registry.hpp"
+
+namespace dyop::box2d::detail {
+namespace {
+
+// The registry and its helpers are protected members of b2Contact; a subclass that is never
+// instantiated is the only way in without touching Box2D.
+class Registry : public b2Contact {
+ public:
+  // Box2D fills the registry lazily, on the first contact it creates; doing it first means that
+  // lazy fill cannot overwrite our entry later (nor have overwritten it already).
+  static void initialize() {
+    if (!s_initialized) {
+      InitializeRegisters();
+      s_initialized = true;
+    }
+  }
+
+  static PolygonContactFcns get() {
+    initialize();
+    const b2ContactRegister& r = s_registers[b2Shape::e_polygon][b2Shape::e_polygon];
+    return {r.createFcn, r.destroyFcn};
+  }
+
+  static void set(const PolygonContactFcns& f) {
+    initialize();
+    AddType(f.create, f.destroy, b2Shape::e_polygon, b2Shape::e_polygon);
+  }
+};
+
+}  // namespace
+
+PolygonContactFcns polygon_contact_fcns() { return Registry::get(); }
+
+void register_polygon_contact(const PolygonContactFcns& f) { Registry::set(f); }
+
+}  // namespace dyop::box2d::detail

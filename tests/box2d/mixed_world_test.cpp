@@ -1,0 +1,201 @@
+// A world of circles, boxes, a pentagon, edges and triangles: the plug-in answers triangle pairs
+// and leaves every other pair exactly as Box2D's own code answers it.
+#include <cstring>
+#include <iostream>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace dyop::box2d::testing {
+namespace {
+
+bool is_triangle(const b2Fixture* f) {
+  return f->GetType() == b2Shape::e_polygon &&
+         static_cast<const b2PolygonShape*>(f->GetShape())->m_count == 3;
+}
+
+bool same(const b2Manifold& x, const b2Manifold& y) {
+  if (x.pointCount != y.pointCount) return false;
+  if (x.pointCount == 0) return true;
+  if (x.type != y.type || !(x.localNormal == y.localNormal) || !(x.localPoint == y.localPoint)) {
+    return false;
+  }
+  for (int i = 0; i < x.pointCount; ++i) {
+    if (!(x.points[i].localPoint == y.points[i].localPoint) ||
+        x.points[i].id.key != y.points[i].id.key) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Checks every manifold right after Box2D evaluated it (PreSolve runs then, with the transforms
+// Evaluate saw): polygon pairs with a side that is not a triangle must be b2CollidePolygons' own,
+// bit for bit, and triangle pairs the plug-in's `collide_polygons` (but for Lin–Canny's).
+class Checker : public b2ContactListener {
+ public:
+  explicit Checker(Backend backend) : backend_(backend) {}
+
+  void PreSolve(b2Contact* contact, const b2Manifold*) override {
+    const b2Fixture* fa = contact->GetFixtureA();
+    const b2Fixture* fb = contact->GetFixtureB();
+    if (fa->GetType() != b2Shape::e_polygon || fb->GetType() != b2Shape::e_polygon) {
+      ++other_pairs;  // circles and edges: Box2D's own contact classes, never the plug-in's
+      return;
+    }
+    const auto* a = static_cast<const b2PolygonShape*>(fa->GetShape());
+    const auto* b = static_cast<const b2PolygonShape*>(fb->GetShape());
+    const b2Transform& xa = fa->GetBody()->GetTransform();
+    const b2Transform& xb = fb->GetBody()->GetTransform();
+    b2Manifold expected;
+    if (is_triangle(fa) && is_triangle(fb)) {
+      ++triangle_pairs;
+      // Lin–Canny starts from the contact's own cache, which this check cannot share.
+      if (backend_ == Backend::LinCanny) return;
+      collide_polygons(&expected, backend_, a, xa, b, xb);
+      ++own_evaluations;  // counted in stats() too: the test takes them out again
+      own_manifolds += expected.pointCount > 0;
+    } else {
+      ++polygon_pairs;
+      b2CollidePolygons(&expected, a, xa, b, xb);
+    }
+    if (!same(*contact->GetManifold(), expected)) ++mismatches;
+  }
+
+  int triangle_pairs = 0;
+  int polygon_pairs = 0;
+  int other_pairs = 0;
+  int mismatches = 0;
+  std::uint64_t own_evaluations = 0;
+  std::uint64_t own_manifolds = 0;
+
+ private:
+  Backend backend_;
+};
+
+// Edges for ground, a static box, and dynamic circles, boxes, a pentagon and triangles dropped
+// in a heap, so that every kind of pair touches.
+std::vector<b2Body*> build_mixed_world(World& world) {
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+  b2EdgeShape edge;
+  edge.SetTwoSided(b2Vec2(-12.0f, 0.0f), b2Vec2(12.0f, 0.0f));
+  ground->CreateFixture(&edge, 0.0f);
+  edge.SetTwoSided(b2Vec2(-12.0f, 0.0f), b2Vec2(-14.0f, 8.0f));
+  ground->CreateFixture(&edge, 0.0f);
+  edge.SetTwoSided(b2Vec2(12.0f, 0.0f), b2Vec2(14.0f, 8.0f));
+  ground->CreateFixture(&edge, 0.0f);
+  b2PolygonShape block;
+  block.SetAsBox(1.0f, 0.5f, b2Vec2(4.0f, 0.5f), 0.0f);
+  ground->CreateFixture(&block, 0.0f);
+
+  std::vector<b2Body*> bodies;
+  for (int i = 0; i < 40; ++i) {
+    const b2Vec2 p(-6.0f + 1.5f * (i % 9), 2.0f + 1.5f * (i / 9));
+    b2Body* body = add_body(world, b2_dynamicBody, p, 0.3f * i);
+    switch (i % 4) {
+      case 0: {
+        b2CircleShape circle;
+        circle.m_radius = 0.4f;
+        body->CreateFixture(&circle, 1.0f);
+        break;
+      }
+      case 1: {
+        b2PolygonShape box;
+        box.SetAsBox(0.5f, 0.3f);
+        body->CreateFixture(&box, 1.0f);
+        break;
+      }
+      case 2:
+        add_triangle(body, b2Vec2(-0.5f, -0.3f), b2Vec2(0.5f, -0.3f), b2Vec2(0.0f, 0.5f));
+        break;
+      default: {
+        if (i % 8 == 3) {
+          b2PolygonShape pentagon;
+          b2Vec2 v[5];
+          for (int k = 0; k < 5; ++k) v[k].Set(0.5f * std::cos(1.2566f * k), 0.5f * std::sin(1.2566f * k));
+          pentagon.Set(v, 5);
+          body->CreateFixture(&pentagon, 1.0f);
+        } else {
+          add_triangle(body, b2Vec2(-0.4f, -0.4f), b2Vec2(0.4f, -0.4f), b2Vec2(0.4f, 0.4f));
+          add_triangle(body, b2Vec2(-0.4f, -0.4f), b2Vec2(0.4f, 0.4f), b2Vec2(-0.4f, 0.4f));
+        }
+      }
+    }
+    bodies.push_back(body);
+  }
+  return bodies;
+}
+
+class MixedWorld : public ::testing::TestWithParam<Backend> {
+ protected:
+  void SetUp() override { ASSERT_TRUE(install(GetParam()).ok()); }
+  void TearDown() override { EXPECT_TRUE(uninstall().ok()); }
+};
+
+TEST_P(MixedWorld, NonTrianglePairsKeepBox2DsOwnResults) {
+  Checker checker(GetParam());
+  {
+    World world;
+    world->SetContactListener(&checker);
+    build_mixed_world(world);
+    for (int i = 0; i < 4 * kStepsPerSecond; ++i) world.step();
+  }
+  const Stats s = stats();
+  const std::uint64_t triangle_pairs = s.triangles(GetParam()) - checker.own_evaluations;
+  const std::uint64_t manifolds = s.manifolds - checker.own_manifolds;
+  std::cout << name(GetParam()) << ": touching triangle pairs " << checker.triangle_pairs
+            << ", other polygon pairs " << checker.polygon_pairs << ", circle/edge pairs "
+            << checker.other_pairs << "; stats: triangle pairs " << triangle_pairs
+            << ", polygon pairs to Box2D " << s.polygon_pairs << ", manifolds " << manifolds
+            << ", fallbacks " << s.fallbacks << "\n";
+  EXPECT_EQ(checker.mismatches, 0);
+  EXPECT_GT(checker.triangle_pairs, 0);
+  EXPECT_GT(checker.polygon_pairs, 0);
+  EXPECT_GT(checker.other_pairs, 0);
+  // Every pair the plug-in evaluated went where it belongs, and was counted there.
+  // Counted where they belong: every touching pair was evaluated (and more, in the broad phase's
+  // overlapping pairs that do not touch), and every touching triangle pair had a manifold.
+  EXPECT_GE(triangle_pairs, static_cast<std::uint64_t>(checker.triangle_pairs));
+  EXPECT_GE(s.polygon_pairs, static_cast<std::uint64_t>(checker.polygon_pairs));
+  EXPECT_EQ(manifolds, static_cast<std::uint64_t>(checker.triangle_pairs));
+  EXPECT_EQ(s.fallbacks, 0u);
+  for (Backend other : all_backends) {
+    if (other != GetParam()) {
+      EXPECT_EQ(s.triangles(other), 0u) << name(other);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, MixedWorld, ::testing::ValuesIn(all_backends),
+                         [](const auto& info) {
+                           std::string n = name(info.param);
+                           std::replace(n.begin(), n.end(), '-', '_');
+                           return n;
+                         });
+
+// The final state of every body after 4 s of the mixed world.
+std::vector<b2Transform> run_mixed_world() {
+  World world;
+  const std::vector<b2Body*> bodies = build_mixed_world(world);
+  for (int i = 0; i < 4 * kStepsPerSecond; ++i) world.step();
+  std::vector<b2Transform> out;
+  for (const b2Body* b : bodies) out.push_back(b->GetTransform());
+  return out;
+}
+
+TEST(MixedWorldThroughThePlugIn, Box2DBackendIsBitIdenticalToBox2DsOwnContact) {
+  ASSERT_FALSE(installed().has_value());
+  const std::vector<b2Transform> own = run_mixed_world();
+  ASSERT_TRUE(install(Backend::Box2D).ok());
+  const std::vector<b2Transform> plugged = run_mixed_world();
+  const Stats s = stats();
+  EXPECT_TRUE(uninstall().ok());
+  EXPECT_GT(s.triangles(Backend::Box2D), 0u);
+  ASSERT_EQ(own.size(), plugged.size());
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    EXPECT_EQ(std::memcmp(&own[i], &plugged[i], sizeof(b2Transform)), 0) << "body " << i;
+  }
+}
+
+}  // namespace
+}  // namespace dyop::box2d::testing
