@@ -1,0 +1,16 @@
+#pragma once
+// The subcommands of the `dyop` program: each file registers its own with CLI11; its callback
+// runs the command and stores the process exit code.
+
+#include <CLI/CLI.hpp>
+
+namespace dyop::cli {
+
+/// Exit codes: 0 success (bad data lines are reported in the output, not in the exit code),
+/// 1 usage error (CLI11's own), 2 input/output error.
+constexpr int exit_usage_error = 1;
+constexpr int exit_io_error = 2;
+
+void add_pairs_command(CLI::App& app, int& exit_code);
+
+}  // namespace dyop::cli
