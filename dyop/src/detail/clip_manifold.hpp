@@ -7,6 +7,7 @@
 // reference line is at most the margin. Keys name the feature pair so that they stay equal from
 // frame to frame while the same features touch.
 
+#include <algorithm>
 #include <cstdint>
 
 #include "detail/axis_overlap.hpp"
@@ -21,27 +22,25 @@ inline std::uint32_t contact_key(bool reference_is_b, int ref_edge, int incident
          static_cast<std::uint32_t>(incident) << 16 | static_cast<std::uint32_t>(side) << 24;
 }
 
+// One end of the incident edge after clipping: the end itself (side None) or the point where a
+// side line cut it, as a position along the edge.
 template <class T>
-struct ClipVertex {
-  Vec2<T> p;
-  int incident;    // CCW index: the incident vertex, or the incident edge when clipped
-  ClipSide side;   // None: an original incident vertex
+struct ClippedEnd {
+  T along;        // 0 at the edge's first vertex, 1 at its second
+  ClipSide side;  // which side line cut this end, None when the end is the vertex itself
 };
 
-// Keeps the part of segment `in` with `dot(dir, p) <= offset`; returns the number of points out.
+// Box2D clips the incident edge against the start side line, then the end side line; along the
+// edge the tangential coordinate s is linear, so both clips amount to clamping each end's s into
+// [lo, hi] and moving the end by the same fraction. No branch on which ends are cut.
 template <class T>
-inline int clip_segment(const ClipVertex<T> in[2], ClipVertex<T> out[2], const Vec2<T>& dir,
-                        T offset, int incident_edge, ClipSide side) {
-  int count = 0;
-  const T d0 = dir.dot(in[0].p) - offset;
-  const T d1 = dir.dot(in[1].p) - offset;
-  if (d0 <= 0) out[count++] = in[0];
-  if (d1 <= 0) out[count++] = in[1];
-  if (d0 * d1 < 0) {
-    const T t = d0 / (d0 - d1);
-    out[count++] = {in[0].p + t * (in[1].p - in[0].p), incident_edge, side};
-  }
-  return count;
+inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
+  const T clamped = std::min(std::max(s, lo), hi);
+  const T ds = s_other - s;
+  ClippedEnd<T> out;
+  out.side = s < lo ? ClipSide::Start : (s > hi ? ClipSide::End : ClipSide::None);
+  out.along = out.side == ClipSide::None ? from : from + (clamped - s) / ds * (T(1) - 2 * from);
+  return out;
 }
 
 template <class T>
@@ -59,36 +58,35 @@ Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
   m.reference_edge = static_cast<std::uint8_t>(rt.input_edge(e));
   m.normal = ref_is_a ? n : Vec2<T>(-n);
 
-  int inc = 0;
-  T least = n.dot(it.normal(0));
-  for (int k = 1; k < 3; ++k) {
-    const T d = n.dot(it.normal(k));
-    if (d < least) { least = d; inc = k; }
-  }
+  T least;
+  int inc;
+  min3(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
   m.incident_edge = static_cast<std::uint8_t>(it.input_edge(inc));
 
   const Vec2<T>& v1 = rv[e];
-  const Vec2<T>& v2 = rv[next3(e)];
   const Vec2<T> tangent(-n.y(), n.x());  // unit, from v1 to v2 (CCW edge, outward normal n)
-  const ClipVertex<T> segment[2] = {{iv[inc], inc, ClipSide::None},
-                                    {iv[next3(inc)], next3(inc), ClipSide::None}};
-  ClipVertex<T> once[2];
-  ClipVertex<T> twice[2];
-  if (clip_segment(segment, once, Vec2<T>(-tangent), margin - tangent.dot(v1), inc,
-                   ClipSide::Start) < 2 ||
-      clip_segment(once, twice, tangent, tangent.dot(v2) + margin, inc, ClipSide::End) < 2) {
-    return m;
-  }
+  const Vec2<T>& p0 = iv[inc];
+  const Vec2<T>& p1 = iv[next3(inc)];
+  const T s0 = tangent.dot(p0);
+  const T s1 = tangent.dot(p1);
+  const T lo = tangent.dot(v1) - margin;
+  const T hi = tangent.dot(rv[next3(e)]) + margin;
+  // The whole edge beyond one side line: Box2D's clip leaves fewer than two points, no manifold.
+  if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return m;
+
+  const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
+  const int vertex[2] = {inc, next3(inc)};
   const T front = n.dot(v1);
-  for (const ClipVertex<T>& c : twice) {
-    const T s = n.dot(c.p) - front;
-    if (s > margin) continue;
-    const int incident = c.side == ClipSide::None ? it.input_vertex(c.incident)
-                                                  : it.input_edge(c.incident);
+  for (int k = 0; k < 2; ++k) {
+    const Vec2<T> p = p0 + ends[k].along * (p1 - p0);
+    const T separation = n.dot(p) - front;
+    if (separation > margin) continue;
+    const bool cut = ends[k].side != ClipSide::None;
+    const int incident = cut ? it.input_edge(inc) : it.input_vertex(vertex[k]);
     ManifoldPoint<T>& out = m.points[m.point_count++];
-    out.point = c.p + f.origin;
-    out.separation = s;
-    out.key = contact_key(!ref_is_a, m.reference_edge, incident, c.side);
+    out.point = (cut ? p : (k == 0 ? p0 : p1)) + f.origin;
+    out.separation = cut ? separation : n.dot(k == 0 ? p0 : p1) - front;
+    out.key = contact_key(!ref_is_a, m.reference_edge, incident, ends[k].side);
   }
   return m;
 }
