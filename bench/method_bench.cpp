@@ -1,12 +1,14 @@
 // Google Benchmark suite: BM_<method>/<class>/<level>/<precision>, one pair per iteration over
 // at least 8192 distinct seeded pairs per class (prepared outside the timed loop), so the branch
 // predictor cannot learn the set. Compare methods by their ratio to BM_box2d/<class>/manifold/float
-// in the same run: the machines are shared and noisy.
+// in the same run: the machines are shared and noisy. Batch kernel benchmarks time a whole
+// batch per iteration; their items_per_second is pairs per second.
 #include <benchmark/benchmark.h>
 
 #include <map>
 #include <string>
 
+#include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "workloads/pair_sets.hpp"
 
@@ -74,6 +76,48 @@ void bm_lin_canny_warm(benchmark::State& state, BenchClass c, Level l) {
   state.SetItemsProcessed(state.iterations());
 }
 
+// The batch kernel over structure-of-arrays copies of a set; `state.iterations()` counts pairs.
+template <class T>
+struct BatchArrays {
+  std::vector<T> c[12];
+  std::vector<Status> status;
+  std::vector<T> separation, nx, ny;
+  BatchArrays(const std::vector<Triangle<T>>& a, const std::vector<Triangle<T>>& b, std::size_t n)
+      : status(n), separation(n), nx(n), ny(n) {
+    for (auto& v : c) v.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t s = k % a.size();  // a streaming set repeats the distinct pairs
+      for (int i = 0; i < 3; ++i) {
+        c[2 * i][k] = a[s].vertex(i).x();
+        c[2 * i + 1][k] = a[s].vertex(i).y();
+        c[6 + 2 * i][k] = b[s].vertex(i).x();
+        c[7 + 2 * i][k] = b[s].vertex(i).y();
+      }
+    }
+  }
+  PairBatch<T> pairs() const {
+    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(),  c[5].data(),
+            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
+            status.size()};
+  }
+  BatchOutput<T> out() { return {status.data(), separation.data(), nx.data(), ny.data()}; }
+};
+
+// `pairs` 0: the class's distinct pairs (in cache); otherwise a streaming set of that many.
+template <class T>
+void bm_batch(benchmark::State& state, BenchClass c, Level l, std::size_t pairs) {
+  const PairSet<T>& s = pairs_of<T>(c);
+  BatchArrays<T> arrays(s.a, s.b, pairs == 0 ? s.size() : pairs);
+  const PairBatch<T> in = arrays.pairs();
+  const BatchOutput<T> out = arrays.out();
+  for (auto _ : state) {
+    penetrate_batch(in, l, out);
+    benchmark::DoNotOptimize(arrays.status.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(in.count));
+}
+
 #ifdef DYOP_WITH_BOX2D
 // Box2D's own narrow phase, which always builds the full manifold.
 void bm_box2d(benchmark::State& state, BenchClass c) {
@@ -104,6 +148,14 @@ void register_precision() {
       }
       benchmark::RegisterBenchmark(("BM_lin-canny-warm" + tail).c_str(), bm_lin_canny_warm<T>, c,
                                    l);
+      if (l == Level::Overlap || l == Level::Depth) {
+        benchmark::RegisterBenchmark(("BM_batch" + tail).c_str(), bm_batch<T>, c, l, 0);
+        if (c == BenchClass::Overlapping || c == BenchClass::Mixed) {
+          // Streaming: 1M pairs, far beyond the caches (the memory floor).
+          benchmark::RegisterBenchmark(("BM_batch-stream-1M" + tail).c_str(), bm_batch<T>, c, l,
+                                       std::size_t{1} << 20);
+        }
+      }
     }
   }
 }

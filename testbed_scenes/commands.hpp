@@ -12,5 +12,6 @@ constexpr int exit_usage_error = 1;
 constexpr int exit_io_error = 2;
 
 void add_pairs_command(CLI::App& app, int& exit_code);
+void add_bench_command(CLI::App& app, int& exit_code);
 
 }  // namespace dyop::cli

@@ -35,13 +35,12 @@ struct PivotFeatures {
 };
 
 // True when `p` is strictly inside triangle `t` (local vertices `verts`): orientation signs
-// against every edge, never the paper's comparison of area sums.
+// against every edge, never the paper's comparison of area sums. All three are computed (no early
+// exit): on real inputs the outcome of each test is unpredictable.
 template <class T>
 bool strictly_inside(const Triangle<T>& t, const std::array<Vec2<T>, 3>& verts, const Vec2<T>& p) {
-  for (int j = 0; j < 3; ++j) {
-    if (t.normal(j).dot(p - verts[j]) >= 0) return false;
-  }
-  return true;
+  return std::max({t.normal(0).dot(p - verts[0]), t.normal(1).dot(p - verts[1]),
+                   t.normal(2).dot(p - verts[2])}) < 0;
 }
 
 }  // namespace

@@ -1,0 +1,213 @@
+#include "report/bench_runners.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <type_traits>
+
+#include "dyop/batch.hpp"
+#include "dyop/method.hpp"
+#ifdef DYOP_WITH_BOX2D
+#include "dyop/box2d.hpp"
+#endif
+
+namespace dyop::report {
+namespace {
+
+// Keeps results alive without storing them: the compiler cannot drop a call whose result feeds
+// a volatile.
+volatile double g_sink = 0;
+
+template <class Pass>
+double median_ns(std::size_t pairs, int passes, Pass&& pass) {
+  std::vector<double> ns;
+  double sink = 0;
+  for (int p = 0; p < passes; ++p) {
+    const auto start = std::chrono::steady_clock::now();
+    sink += pass(p);
+    const auto stop = std::chrono::steady_clock::now();
+    ns.push_back(std::chrono::duration<double, std::nano>(stop - start).count() /
+                 static_cast<double>(pairs));
+  }
+  g_sink = sink;
+  std::nth_element(ns.begin(), ns.begin() + ns.size() / 2, ns.end());
+  return ns[ns.size() / 2];
+}
+
+bool is_method(Runner r, Method& m) {
+  switch (r) {
+    case Runner::Dyop: m = Method::Dyop; return true;
+    case Runner::DyopFast: m = Method::DyopFast; return true;
+    case Runner::DyopPaper: m = Method::DyopPaper; return true;
+    case Runner::LinCannyCold: m = Method::LinCanny; return true;
+    case Runner::Sat: m = Method::Sat; return true;
+    case Runner::Epa: m = Method::Epa; return true;
+    default: return false;
+  }
+}
+
+// The set as the batch kernel takes it: one array per coordinate of the CCW vertices.
+template <class T>
+struct SoA {
+  std::vector<T> c[12];
+  explicit SoA(const workloads::PairSet<T>& s) {
+    for (auto& v : c) v.resize(s.size());
+    for (std::size_t k = 0; k < s.size(); ++k) {
+      for (int i = 0; i < 3; ++i) {
+        c[2 * i][k] = s.a[k].vertex(i).x();
+        c[2 * i + 1][k] = s.a[k].vertex(i).y();
+        c[6 + 2 * i][k] = s.b[k].vertex(i).x();
+        c[7 + 2 * i][k] = s.b[k].vertex(i).y();
+      }
+    }
+  }
+  PairBatch<T> batch() const {
+    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(),  c[5].data(),
+            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
+            c[0].size()};
+  }
+};
+
+template <class T>
+struct BatchOut {
+  std::vector<Status> status;
+  std::vector<T> separation, nx, ny;
+  explicit BatchOut(std::size_t n) : status(n), separation(n), nx(n), ny(n) {}
+  BatchOutput<T> view() { return {status.data(), separation.data(), nx.data(), ny.data()}; }
+};
+
+}  // namespace
+
+const char* name(Runner r) {
+  switch (r) {
+    case Runner::Dyop: return "dyop";
+    case Runner::DyopFast: return "dyop-fast";
+    case Runner::DyopPaper: return "dyop-paper";
+    case Runner::LinCannyCold: return "lin-canny";
+    case Runner::LinCannyWarm: return "lin-canny-warm";
+    case Runner::Sat: return "sat";
+    case Runner::Epa: return "epa";
+    case Runner::Box2D: return "box2d";
+    case Runner::Batch: return "batch";
+  }
+  return "unknown";
+}
+
+const char* name(Level l) {
+  switch (l) {
+    case Level::Overlap: return "overlap";
+    case Level::Depth: return "depth";
+    case Level::Contact: return "contact";
+    case Level::Manifold: return "manifold";
+  }
+  return "unknown";
+}
+
+bool supports(Runner r, Level level, bool is_float) {
+  switch (r) {
+    case Runner::Box2D:
+#ifdef DYOP_WITH_BOX2D
+      return level == Level::Manifold && is_float;
+#else
+      (void)level;
+      (void)is_float;
+      return false;
+#endif
+    case Runner::Batch: return level == Level::Overlap || level == Level::Depth;
+    default: return true;
+  }
+}
+
+template <class T>
+std::vector<Answer<T>> answers(Runner r, const workloads::PairSet<T>& set) {
+  std::vector<Answer<T>> out(set.size());
+  auto keep = [&](std::size_t k, const auto& res) {
+    out[k].status = res.status;
+    out[k].separation = static_cast<T>(res.separation);
+    out[k].normal = res.normal.template cast<T>();
+  };
+  Method m;
+  if (is_method(r, m)) {
+    for (std::size_t k = 0; k < set.size(); ++k) keep(k, penetrate(m, set.a[k], set.b[k]));
+  } else if (r == Runner::LinCannyWarm) {
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      LinCannyCache cache;
+      lin_canny(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
+      keep(k, lin_canny(set.a[k], set.b[k], Query<T>{}, &cache));
+    }
+  } else if (r == Runner::Box2D) {
+#ifdef DYOP_WITH_BOX2D
+    if constexpr (std::is_same_v<T, float>) {
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        keep(k, box2d::collide_triangles(set.a[k], set.b[k]));
+      }
+    }
+#endif
+  } else if (r == Runner::Batch) {
+    const SoA<T> soa(set);
+    BatchOut<T> o(set.size());
+    penetrate_batch(soa.batch(), Level::Depth, o.view());
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      out[k] = {o.status[k], o.separation[k], Vec2<T>(o.nx[k], o.ny[k])};
+    }
+  }
+  return out;
+}
+
+template <class T>
+double time_per_pair(Runner r, const workloads::PairSet<T>& set, Level level, int passes) {
+  const std::size_t n = set.size();
+  const Query<T> q{level};
+  Method m;
+  if (is_method(r, m)) {
+    return median_ns(n, passes, [&](int) {
+      double sink = 0;
+      for (std::size_t k = 0; k < n; ++k) sink += penetrate(m, set.a[k], set.b[k], q).separation;
+      return sink;
+    });
+  }
+  if (r == Runner::LinCannyWarm) {
+    // Every pass is one frame of a small motion: the caches hold the previous frame's features.
+    std::vector<LinCannyCache> cache(n);
+    for (std::size_t k = 0; k < n; ++k) lin_canny(set.a[k], set.b_next[k], q, &cache[k]);
+    return median_ns(n, passes, [&](int pass) {
+      const std::vector<Triangle<T>>& b = pass % 2 == 0 ? set.b : set.b_next;
+      double sink = 0;
+      for (std::size_t k = 0; k < n; ++k) sink += lin_canny(set.a[k], b[k], q, &cache[k]).separation;
+      return sink;
+    });
+  }
+  if (r == Runner::Batch) {
+    const SoA<T> soa(set);
+    BatchOut<T> o(n);
+    const PairBatch<T> batch = soa.batch();
+    const BatchOutput<T> view = o.view();
+    return median_ns(n, passes, [&](int) {
+      penetrate_batch(batch, level, view);
+      return static_cast<double>(o.status[n / 2]);
+    });
+  }
+#ifdef DYOP_WITH_BOX2D
+  if constexpr (std::is_same_v<T, float>) {
+    if (r == Runner::Box2D) {
+      const workloads::Box2DPairSet s = workloads::make_box2d_pair_set(set);
+      return median_ns(n, passes, [&](int) {
+        double sink = 0;
+        b2Manifold manifold;
+        for (std::size_t k = 0; k < n; ++k) {
+          b2CollidePolygons(&manifold, &s.shape_a[k], s.xf_a[k], &s.shape_b[k], s.xf_b[k]);
+          sink += manifold.pointCount;
+        }
+        return sink;
+      });
+    }
+  }
+#endif
+  return 0;
+}
+
+template std::vector<Answer<float>> answers(Runner, const workloads::PairSet<float>&);
+template std::vector<Answer<double>> answers(Runner, const workloads::PairSet<double>&);
+template double time_per_pair(Runner, const workloads::PairSet<float>&, Level, int);
+template double time_per_pair(Runner, const workloads::PairSet<double>&, Level, int);
+
+}  // namespace dyop::report
