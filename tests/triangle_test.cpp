@@ -101,5 +101,21 @@ TEST(Triangle, NormalsAreUnitAndPointOutward) {
   }
 }
 
+TEST(Triangle, MovedRotatesVerticesAndNormalsAndKeepsTheRest) {
+  const auto t = Triangle<double>::make(V(0, 0), V(0, 1), V(2, 0));  // clockwise
+  ASSERT_TRUE(t.ok());
+  const double angle = 0.7;
+  const Triangle<double> m = t.triangle.moved(std::cos(angle), std::sin(angle), V(10, -3));
+  const auto remade = Triangle<double>::make(m.vertex(0), m.vertex(1), m.vertex(2));
+  ASSERT_TRUE(remade.ok());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR((m.normal(i) - remade.triangle.normal(i)).norm(), 0, 1e-15);
+    EXPECT_EQ(m.edge_length(i), t.triangle.edge_length(i));
+    EXPECT_EQ(m.input_vertex(i), t.triangle.input_vertex(i));
+  }
+  EXPECT_EQ(m.size(), t.triangle.size());
+  EXPECT_NEAR((m.vertex(0) - V(10, -3)).norm(), 0, 1e-15);
+}
+
 }  // namespace
 }  // namespace dyop

@@ -14,6 +14,15 @@ const char* name(Backend b) {
   return "unknown";
 }
 
+const char* name(Skip s) {
+  switch (s) {
+    case Skip::Bounds: return "bounds";
+    case Skip::WarmAxis: return "warm-axis";
+    case Skip::Unmoved: return "unmoved";
+  }
+  return "unknown";
+}
+
 namespace detail {
 
 std::optional<Method> method_of(Backend b) {

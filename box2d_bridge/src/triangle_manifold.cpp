@@ -3,35 +3,22 @@
 #include "dyop/box2d.hpp"
 
 namespace dyop::box2d::detail {
-namespace {
 
-Vec2<float> to_vec(const b2Vec2& v) { return {v.x, v.y}; }
-
-TriangleOrError<float> triangle_of(const b2Vec2 (&v)[3]) {
-  return Triangle<float>::make(to_vec(v[0]), to_vec(v[1]), to_vec(v[2]));
-}
-
-}  // namespace
-
-bool triangle_manifold(Method m, const b2PolygonShape& a, const b2PolygonShape& b,
-                       const b2Transform& b_in_a, LinCannyCache* cache, b2Manifold* out) {
-  // Everything happens in A's body frame: A's vertices as stored, B's moved there. The vertices
-  // are given in Box2D's order, so the features the method reports are Box2D's indices.
-  const b2Vec2 va[3] = {a.m_vertices[0], a.m_vertices[1], a.m_vertices[2]};
-  const b2Vec2 vb[3] = {b2Mul(b_in_a, b.m_vertices[0]), b2Mul(b_in_a, b.m_vertices[1]),
-                        b2Mul(b_in_a, b.m_vertices[2])};
-  const TriangleOrError<float> ta = triangle_of(va);
-  const TriangleOrError<float> tb = triangle_of(vb);
-  if (!ta.ok() || !tb.ok()) return false;
-
+bool triangle_manifold(Method m, const Triangle<float>& ta, const Triangle<float>& tb,
+                       const b2PolygonShape& a, const b2PolygonShape& b,
+                       const b2Transform& b_in_a, LinCannyCache* cache, b2Manifold* out,
+                       std::int8_t* face) {
+  // Everything happens in A's body frame. The triangles were made from Box2D's vertices in
+  // Box2D's order, so the features the method reports are Box2D's indices.
   Query<float> query;
   query.level = Level::Manifold;
   query.margin = a.m_radius + b.m_radius;  // the skins: contacts are speculative, as Box2D's
   query.face_hysteresis = face_hysteresis;
-  const Result<float> r = penetrate(m, ta.triangle, tb.triangle, query, cache);
+  const Result<float> r = penetrate(m, ta, tb, query, cache);
   if (r.status == Status::Invalid) return false;
 
   const Manifold<float>& mf = r.manifold;
+  *face = static_cast<std::int8_t>(mf.reference_edge + (mf.reference_is_a ? 0 : 3));
   out->pointCount = mf.point_count;
   if (mf.point_count == 0) return true;
 

@@ -4,14 +4,19 @@
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <cstdint>
+
 #include "dyop/method.hpp"
 
 namespace dyop::box2d::detail {
 
-// Fills `out` with method `m`'s manifold for triangles `a` and `b` (3-vertex polygons, each in its
-// own body frame) when B's body frame is `b_in_a` in A's. Returns false, leaving `out` untouched,
-// when the method cannot answer (a triangle too thin for `Triangle::make`, or `Status::Invalid`).
-bool triangle_manifold(Method m, const b2PolygonShape& a, const b2PolygonShape& b,
-                       const b2Transform& b_in_a, LinCannyCache* cache, b2Manifold* out);
+// Fills `out` with method `m`'s manifold for triangles `ta` (A's, in A's body frame) and `tb`
+// (B's, moved into A's body frame by `b_in_a`), whose polygons are `a` and `b`. `face` gets the
+// face the method judged the pair on (0..2 A's edges, 3..5 B's), also when no point is kept.
+// Returns false, leaving `out` untouched, when the method answers `Status::Invalid`.
+bool triangle_manifold(Method m, const Triangle<float>& ta, const Triangle<float>& tb,
+                       const b2PolygonShape& a, const b2PolygonShape& b,
+                       const b2Transform& b_in_a, LinCannyCache* cache, b2Manifold* out,
+                       std::int8_t* face);
 
 }  // namespace dyop::box2d::detail

@@ -285,9 +285,13 @@ void answer_separated(const PairFrame<T>& f, const Query<T>& q, const Simplex<T>
   const Support<T>& last = s.p[s.n - 1];
   r.feature_a = simplex_feature(f.ta, p.ia, last.ia);
   r.feature_b = simplex_feature(f.tb, p.ib, last.ib);
-  // Within the margin a separated pair still gets a (speculative) manifold, on the face whose
-  // normal is nearest to GJK's.
-  detail::fill_manifold(f, q, detail::overlap_on_axis(f, nearest_axis(f, r.normal)), r);
+  // Within the margin a separated pair still gets a (speculative) manifold, on the face Box2D's
+  // rule picks: faces of A and B parallel to within rounding (a body resting on another) would
+  // otherwise swap from step to step, and warm starting with them.
+  if (q.level == Level::Manifold) {
+    detail::fill_manifold(f, q, detail::reference_face(detail::all_overlaps(f), q.face_hysteresis),
+                          r);
+  }
 }
 
 }  // namespace
@@ -351,7 +355,10 @@ Result<T> epa(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query)
   ax.overlap = depth;
   detail::fill_from_axis(f, query.level, ax, r);
   r.normal = poly.normal[nearest];
-  detail::fill_manifold(f, query, ax, r);
+  if (query.level == Level::Manifold) {
+    detail::fill_manifold(
+        f, query, detail::reference_face(detail::all_overlaps(f), query.face_hysteresis), r);
+  }
   return r;
 }
 

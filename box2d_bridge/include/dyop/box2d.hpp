@@ -85,17 +85,67 @@ struct InstallResult {
   bool ok() const { return status == InstallStatus::Done; }  ///< true when `status == Done`
 };
 
+/// What a world's narrow phase may skip: each switch avoids work whose result nobody uses, and
+/// never changes the arithmetic of the work it keeps. With an exact backend (`Dyop`, `Sat`, and
+/// `Epa`, `Box2D` likewise) every skip leaves the simulation bit-identical; with `LinCanny`, a
+/// skipped step leaves the warm-start cache where it was, and with `DyopFast`, whose manifold can
+/// lie about far pairs, an early-out can change the answer. All on by default.
+///
+/// Sensors need nothing here: Box2D 2.4 never asks a contact of a sensor for a manifold
+/// (`b2Contact::Update` calls `b2TestOverlap`, an overlap test only, and skips `Evaluate`).
+struct Config {
+  /// A pair whose bounding circles are farther apart than a manifold can reach (`reach`) gets
+  /// the empty manifold before any axis work. Box2D's broad phase lets through pairs whose fat
+  /// AABBs (grown by 0.1 m) overlap, many of them apart.
+  bool bounds_early_out = true;
+  /// Each triangle is validated and its normals computed once, in its body frame, when the
+  /// contact is made, and only moved (rotated) into A's frame each step; off: redone every step.
+  bool shape_cache = true;
+  /// The face the pair was judged on last step is tried first: when it still separates the pair
+  /// beyond `reach`, no other work is done (DyOP's pivot choice, warm-started).
+  bool warm_axis = true;
+  /// `LinCanny` starts from the features the pair ended on last step; off: every step cold.
+  bool lin_canny_cache = true;
+  /// A pair whose two bodies have not moved since its last evaluation (bit-identical transforms)
+  /// keeps its manifold.
+  bool reuse_unmoved = true;
+
+  /// Every skip on (the default).
+  static Config all() { return {}; }
+  /// Every skip off: the work of every step done in full.
+  static Config none() { return {false, false, false, false, false}; }
+};
+
+/// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
+/// points are kept up to `margin` in front of the reference face and `margin` beyond its ends,
+/// and no deeper behind it than the face-choice `face_hysteresis`, so every kept point is within
+/// sqrt(2)·margin + face_hysteresis of the other triangle; 2·margin + face_hysteresis is a bound.
+inline float reach(float margin) { return 2 * margin + face_hysteresis; }
+
+/// Why a triangle pair's evaluation was skipped (index of `Stats::skipped`).
+enum class Skip : std::uint8_t {
+  Bounds,    ///< bounding circles apart beyond `reach` (`Config::bounds_early_out`)
+  WarmAxis,  ///< last step's face still separates beyond `reach` (`Config::warm_axis`)
+  Unmoved,   ///< neither body moved since the last evaluation (`Config::reuse_unmoved`)
+};
+
+/// Number of skip reasons: the size of `Stats::skipped`.
+inline constexpr int skip_count = 3;
+
+/// "bounds", "warm-axis", "unmoved".
+const char* name(Skip s);
+
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` for triangle pairs,
 /// and resets `stats`. Installing the backend already installed does nothing and succeeds.
 /// Refused (`ContactsExist`) while contacts made by the plug-in exist: Box2D frees a contact with
 /// the size registered at the time it is destroyed, so the registration must not change under a
 /// live contact. Call it before Box2D's own code has made any polygon contact (typically before
 /// the first `b2World::Step`): contacts made by Box2D's own `b2PolygonContact` are not counted.
-InstallResult install(Backend backend);
+InstallResult install(Backend backend, const Config& config = Config::all());
 
 /// `install` by library method: `Dyop`, `DyopFast`, `LinCanny`, `Sat`, `Epa`; `DyopPaper` is
 /// refused (`UnsupportedMethod`).
-InstallResult install(Method method);
+InstallResult install(Method method, const Config& config = Config::all());
 
 /// Restores what was registered for polygon pairs before the first `install` (Box2D's own
 /// `b2PolygonContact`). Does nothing when not installed. Refused (`ContactsExist`) while
@@ -104,6 +154,9 @@ InstallResult uninstall();
 
 /// The installed backend, or nothing when Box2D's own contact is registered.
 std::optional<Backend> installed();
+
+/// The skips of contacts made from now on (the last `install`'s).
+Config installed_config();
 
 /// Contacts made by the plug-in that Box2D has not destroyed yet. Note: `b2World`'s destructor
 /// frees its contacts without destroying them, so they stay counted; to switch or uninstall after
@@ -129,8 +182,13 @@ struct Stats {
   /// `Triangle::make` once moved into A's frame), answered by `b2CollidePolygons` instead so that
   /// the simulation goes on. Nonzero means the backend's figures include Box2D's answers.
   std::uint64_t fallbacks = 0;
+  /// Triangle-pair evaluations answered without running the backend, per reason (index:
+  /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`.
+  std::array<std::uint64_t, skip_count> skipped{};
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }
+  /// Evaluations skipped for reason `s`.
+  std::uint64_t skips(Skip s) const { return skipped[static_cast<int>(s)]; }
 };
 
 /// The counters since the last `install` or `reset_stats`.

@@ -21,8 +21,10 @@
 /// - Penetrating or touching, `Level::Contact` and up: the candidate axis (an edge normal of A or
 ///   a negated one of B) nearest to EPA's normal names the features and the deepest vertex, and
 ///   `witness_a − witness_b` is EPA's depth along that axis.
-/// - `Level::Manifold`: clipped on the face of that nearest axis (separated pairs: nearest to
-///   GJK's normal); `face_hysteresis` is not used.
+/// - `Level::Manifold`: clipped on the face Box2D's rule picks (each triangle's face of least
+///   overlap, B's only when better by more than `face_hysteresis`), as the exact methods do: a
+///   body resting on another has faces parallel to within rounding, and a face chosen by nearness
+///   to EPA's or GJK's normal would swap between them from step to step.
 /// - `Level::Overlap`: GJK only, stopping at the first support point that proves a gap wider
 ///   than the touching band or at an enclosing simplex whose edges are all farther than it; EPA
 ///   runs only when the origin is within the band of the simplex's boundary.

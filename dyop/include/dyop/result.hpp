@@ -66,6 +66,8 @@ struct ManifoldPoint {
 };
 
 /// Up to two contact points on a reference face, in the manner of Box2D's `b2CollidePolygons`.
+/// The face fields are set whenever a manifold was asked for, also when no point is within the
+/// margin: they name the face the method judged the pair on (a caller can try it first next time).
 template <class T>
 struct Manifold {
   int point_count = 0;          ///< 0, 1 or 2
@@ -96,7 +98,7 @@ struct Result {
   Feature feature_a;  ///< Level ≥ Contact: the feature of A that realises the answer
   Feature feature_b;  ///< Level ≥ Contact: the feature of B that realises the answer
   int iterations = 0;  ///< iterative methods (Lin–Canny, EPA): steps taken; 0 for the others
-  Manifold<T> manifold;  ///< Level == Manifold, Touching/Penetrating or within `margin`
+  Manifold<T> manifold;  ///< Level == Manifold, not Invalid (points: those within `margin`)
 };
 
 /// Tolerance around zero separation inside which a pair is `Touching`, relative to the larger

@@ -72,6 +72,11 @@ class Triangle {
   Vec2<T> tangent(int i) const { return Vec2<T>(-n_[i].y(), n_[i].x()); }
   /// Length of the longest edge: the triangle's size, the unit of its relative tolerances.
   T size() const { return size_; }
+  /// This triangle after the rigid motion x ↦ R·x + translation, R the rotation by the angle whose
+  /// cosine and sine are `c` and `s` (c² + s² = 1). Vertices and normals are rotated, not
+  /// recomputed, and nothing is re-validated: a rigid motion keeps a valid triangle valid. This is
+  /// how a body's triangle, validated once in its body frame, is placed in another frame.
+  Triangle moved(T c, T s, const Vec2<T>& translation) const;
   /// True when the caller gave the vertices clockwise.
   bool flipped() const { return flipped_; }
   /// Caller's index of CCW vertex `i`.

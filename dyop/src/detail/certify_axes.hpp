@@ -26,10 +26,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   } else {
     fill_from_axis(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
   }
-  fill_manifold(f, q,
-                pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
-                               AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
-                r);
+  fill_manifold(f, q, reference_face(overlap, q.face_hysteresis), r);
   return r;
 }
 

@@ -43,6 +43,19 @@ inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
   return out;
 }
 
+// A manifold with no point yet, on the face of `reference_axis`.
+template <class T>
+Manifold<T> empty_manifold(const PairFrame<T>& f, int reference_axis) {
+  const bool ref_is_a = reference_axis < 3;
+  const int e = ref_is_a ? reference_axis : reference_axis - 3;
+  const Vec2<T>& n = ref_is_a ? f.ta.normal(e) : f.tb.normal(e);
+  Manifold<T> m;
+  m.reference_is_a = ref_is_a;
+  m.reference_edge = static_cast<std::uint8_t>((ref_is_a ? f.ta : f.tb).input_edge(e));
+  m.normal = ref_is_a ? n : Vec2<T>(-n);
+  return m;
+}
+
 template <class T>
 Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
   const bool ref_is_a = reference_axis < 3;
@@ -53,10 +66,7 @@ Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
   const std::array<Vec2<T>, 3>& iv = ref_is_a ? f.b : f.a;
   const Vec2<T>& n = rt.normal(e);
 
-  Manifold<T> m;
-  m.reference_is_a = ref_is_a;
-  m.reference_edge = static_cast<std::uint8_t>(rt.input_edge(e));
-  m.normal = ref_is_a ? n : Vec2<T>(-n);
+  Manifold<T> m = empty_manifold(f, reference_axis);
 
   T least;
   int inc;

@@ -85,12 +85,22 @@ inline const AxisOverlap<T>& pick_reference(const AxisOverlap<T>& best_a,
   return best_b.overlap < best_a.overlap - hysteresis ? best_b : best_a;
 }
 
+// Box2D's reference face from all six overlaps: each triangle's best face, then the hysteresis.
+template <class T>
+inline AxisOverlap<T> reference_face(const std::array<T, 6>& overlap, T hysteresis) {
+  const int a = argmin3(overlap, 0);
+  const int b = argmin3(overlap, 3);
+  return pick_reference(AxisOverlap<T>{a, overlap[a], 0}, AxisOverlap<T>{b, overlap[b], 0},
+                        hysteresis);
+}
+
 // The manifold on `reference`, when its separation is within the margin.
 template <class T>
 void fill_manifold(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T>& reference,
                    Result<T>& r) {
-  if (q.level != Level::Manifold || -reference.overlap > q.margin) return;
-  r.manifold = clip_manifold(f, reference.axis, q.margin);
+  if (q.level != Level::Manifold) return;
+  r.manifold = -reference.overlap > q.margin ? empty_manifold(f, reference.axis)
+                                             : clip_manifold(f, reference.axis, q.margin);
 }
 
 // The whole answer of a method that settles on one axis (`ax.overlap` > 0: penetrating); the
