@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run every method on the example pairs, as a table.
+# The main job: set up, build, and run every scene under every narrow phase (`dyop compare
+# --quick`): the table on standard output, progress on standard error, the report (Markdown, CSV,
+# SVG charts) in reports/compare/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-build/bin/dyop pairs --method all --format table --input examples/pairs.csv
+build/bin/dyop compare --quick --out reports/compare

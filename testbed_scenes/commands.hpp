@@ -13,5 +13,9 @@ constexpr int exit_io_error = 2;
 
 void add_pairs_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
+#ifdef DYOP_WITH_BOX2D
+void add_scene_command(CLI::App& app, int& exit_code);
+void add_compare_command(CLI::App& app, int& exit_code);
+#endif
 
 }  // namespace dyop::cli

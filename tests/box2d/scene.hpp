@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the bridge tests: real b2Worlds built from triangle fixtures, and the per-backend
-// installation every physics test runs under.
+// Shared by the bridge tests: real b2Worlds built from triangle fixtures (the scenes library's),
+// and the per-backend installation every physics test runs under.
 
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
@@ -11,76 +11,17 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
+#include "scenes/world.hpp"
 
 namespace dyop::box2d::testing {
 
-// Box2D's testbed settings: 60 Hz, 8 velocity and 3 position iterations.
-constexpr float kTimeStep = 1.0f / 60.0f;
-constexpr int kVelocityIterations = 8;
-constexpr int kPositionIterations = 3;
-constexpr int kStepsPerSecond = 60;
-
-// A world that destroys its bodies before itself: b2World's destructor frees contacts without
-// destroying them, which would leave the plug-in's contacts counted and block `uninstall`.
-// Sleeping is off: a sleeping body cannot drift or jitter, and the tests measure both.
-class World {
- public:
-  explicit World(const b2Vec2& gravity = b2Vec2(0.0f, -10.0f)) : world_(gravity) {
-    world_.SetAllowSleeping(false);
-  }
-  World(const World&) = delete;
-  World& operator=(const World&) = delete;
-  ~World() {
-    while (b2Body* body = world_.GetBodyList()) world_.DestroyBody(body);
-  }
-
-  b2World* operator->() { return &world_; }
-  b2World& get() { return world_; }
-
-  void step() { world_.Step(kTimeStep, kVelocityIterations, kPositionIterations); }
-
- private:
-  b2World world_;
-};
-
-// A triangle fixture from body-frame points, validated by the plug-in.
-inline b2Fixture* add_triangle(b2Body* body, const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2,
-                               float density = 1.0f, float friction = 0.6f) {
-  const TriangleShape t = make_triangle(p0, p1, p2);
-  EXPECT_TRUE(t.ok()) << t.message;
-  b2FixtureDef def;
-  def.shape = &t.shape;
-  def.density = density;
-  def.friction = friction;
-  return body->CreateFixture(&def);
-}
-
-inline b2Body* add_body(World& world, b2BodyType type, const b2Vec2& position, float angle = 0) {
-  b2BodyDef def;
-  def.type = type;
-  def.position = position;
-  def.angle = angle;
-  return world->CreateBody(&def);
-}
-
-// A static ground whose top is y = 0 over [-half_width, half_width], made of unit squares split
-// along a diagonal into two triangle fixtures each: every contact with it is triangle–triangle.
-inline b2Body* add_triangle_ground(World& world, float half_width) {
-  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f));
-  for (float x = -half_width; x < half_width; x += 1.0f) {
-    add_triangle(ground, b2Vec2(x, -1.0f), b2Vec2(x + 1.0f, -1.0f), b2Vec2(x + 1.0f, 0.0f));
-    add_triangle(ground, b2Vec2(x, -1.0f), b2Vec2(x + 1.0f, 0.0f), b2Vec2(x, 0.0f));
-  }
-  return ground;
-}
-
-// A dynamic square of side 2·half made of two triangle fixtures split along its diagonal.
-inline b2Body* add_split_box(World& world, const b2Vec2& center, float half) {
-  b2Body* body = add_body(world, b2_dynamicBody, center);
-  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, -half), b2Vec2(half, half));
-  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, half), b2Vec2(-half, half));
-  return body;
-}
+// The worlds and shapes of the scenes library (testbed_scenes/scenes/world.hpp).
+using scenes::add_body;
+using scenes::add_split_box;
+using scenes::add_triangle;
+using scenes::add_triangle_ground;
+using scenes::World;
+constexpr int kStepsPerSecond = scenes::steps_per_second;
 
 // Deepest overlap of the skins over the body's touching contacts (metres, 0 when none overlap):
 // minus the least world-manifold separation, which Box2D measures between the skins. Box2D's

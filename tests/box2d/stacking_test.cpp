@@ -87,27 +87,6 @@ TEST_P(Stacking, PyramidOf55SplitBoxesStaysStandingFor10s) {
   EXPECT_LE(m.max_tilt, kStandingTilt);
 }
 
-// An L (two 2×1 arms) and a U (3 wide, 2 high) as triangle fixtures of one body each.
-b2Body* add_l_shape(World& world, const b2Vec2& position, float angle) {
-  b2Body* body = add_body(world, b2_dynamicBody, position, angle);
-  add_triangle(body, b2Vec2(0, 0), b2Vec2(2, 0), b2Vec2(2, 1));
-  add_triangle(body, b2Vec2(0, 0), b2Vec2(2, 1), b2Vec2(1, 1));
-  add_triangle(body, b2Vec2(0, 0), b2Vec2(1, 1), b2Vec2(0, 2));
-  add_triangle(body, b2Vec2(1, 1), b2Vec2(1, 2), b2Vec2(0, 2));
-  return body;
-}
-
-b2Body* add_u_shape(World& world, const b2Vec2& position, float angle) {
-  b2Body* body = add_body(world, b2_dynamicBody, position, angle);
-  add_triangle(body, b2Vec2(0, 0), b2Vec2(3, 0), b2Vec2(3, 1));
-  add_triangle(body, b2Vec2(0, 0), b2Vec2(3, 1), b2Vec2(0, 1));
-  add_triangle(body, b2Vec2(0, 1), b2Vec2(1, 1), b2Vec2(1, 2));
-  add_triangle(body, b2Vec2(0, 1), b2Vec2(1, 2), b2Vec2(0, 2));
-  add_triangle(body, b2Vec2(2, 1), b2Vec2(3, 1), b2Vec2(3, 2));
-  add_triangle(body, b2Vec2(2, 1), b2Vec2(3, 2), b2Vec2(2, 2));
-  return body;
-}
-
 // The bodies are dropped one by one into a bin 12 m wide, from 12 m up, every 1.2 s: a body
 // falls 7.2 m in that time, farther than any of these shapes reaches from its origin (3.6 m),
 // so no body starts overlapping another. Settled: 6 s after the last drop, over the next 4 s
@@ -123,10 +102,9 @@ constexpr float kSettledDisplacement = 0.01f;
 // (none passes through the ground or the walls) and nothing moves faster than 1 m/s.
 constexpr float kDyopFastPileSpeed = 1.0f;
 
-// A static wall of 1 × `height` m at x in [x0, x0 + 1], two triangle fixtures.
+// A static wall of 1 × `height` m at x in [x0, x0 + 1]: one cell, two triangle fixtures.
 void add_triangle_wall(b2Body* ground, float x0, float height) {
-  add_triangle(ground, b2Vec2(x0, 0), b2Vec2(x0 + 1, 0), b2Vec2(x0 + 1, height));
-  add_triangle(ground, b2Vec2(x0, 0), b2Vec2(x0 + 1, height), b2Vec2(x0, height));
+  scenes::add_triangle_block(ground, x0, 0.0f, x0 + 1, height, height);
 }
 
 TEST_P(Stacking, PileOfConcaveBodiesSettlesWithoutJitter) {
@@ -138,7 +116,8 @@ TEST_P(Stacking, PileOfConcaveBodiesSettlesWithoutJitter) {
   for (int i = 0; i < kConcaveBodies; ++i) {
     const b2Vec2 p(i % 2 ? 1.0f : -2.0f, 12.0f);
     const float angle = 0.7f * i;
-    bodies.push_back(i % 2 ? add_u_shape(world, p, angle) : add_l_shape(world, p, angle));
+    bodies.push_back(i % 2 ? scenes::add_u_shape(world, p, angle)
+                           : scenes::add_l_shape(world, p, angle));
     for (int k = 0; k < kDropSteps; ++k) world.step();
   }
   for (int i = 0; i < kSettleSeconds * kStepsPerSecond; ++i) world.step();

@@ -1,0 +1,27 @@
+#pragma once
+// Internal to the scenes library: the builder of each Box2D scene (one file per family) and the
+// seeded shapes they share. The catalogue (catalog.cpp) maps names to builders.
+
+#include "scenes/random.hpp"
+#include "scenes/world_scene.hpp"
+
+namespace dyop::scenes::detail {
+
+WorldBuild build_pyramid(World& world, Rng& rng);
+WorldBuild build_pyramid_rows(World& world, Rng& rng);
+WorldBuild build_stack(World& world, Rng& rng);
+WorldBuild build_stack_concave(World& world, Rng& rng);
+WorldBuild build_rain(World& world, Rng& rng);
+WorldBuild build_tumbler(World& world, Rng& rng);
+WorldBuild build_slivers(World& world, Rng& rng);
+WorldBuild build_slivers_far(World& world, Rng& rng);
+WorldBuild build_mixed(World& world, Rng& rng);
+
+/// A dynamic body at `position`, turned at random, holding one irregular triangle whose vertices
+/// lie 0.75 to 1 × `radius` from the body origin, at angles at least 0.5 rad apart (so no sliver).
+b2Body* add_random_triangle(World& world, Rng& rng, const b2Vec2& position, double radius);
+
+/// Up to ±`amount` metres, for placement jitter.
+inline float jitter(Rng& rng, double amount) { return rng.uniformf(-amount, amount); }
+
+}  // namespace dyop::scenes::detail

@@ -1,0 +1,98 @@
+#include <stdexcept>
+#include <string>
+
+#include "scenes/builders.hpp"
+#include "scenes/paper.hpp"
+
+namespace dyop::scenes {
+namespace {
+
+struct Entry {
+  SceneInfo info;
+  WorldBuilder build;  // nullptr: the paper scene, no Box2D world
+};
+
+const std::vector<Entry>& entries() {
+  // Full runs: 10 to 15 s of simulated time; quick runs: 5 s, enough for everything dropped to
+  // land and for a structure that falls to show it.
+  static const std::vector<Entry> list = {
+      {{"paper", "the paper's experiment: 10 triangle types on fixed paths, 90 steps, n-body", 90,
+        90},
+       nullptr},
+      {{"pyramid", "55 boxes of 2 triangle fixtures on a triangle ground (150 triangles)", 600,
+        300},
+       detail::build_pyramid},
+      {{"pyramid-rows", "100 triangle bodies in rows of alternating up and down triangles", 600,
+        300},
+       detail::build_pyramid_rows},
+      {{"stack", "3 stacks of 10 boxes of 2 triangle fixtures on a triangle ground", 600, 300},
+       detail::build_stack},
+      {{"stack-concave", "24 L, U and star bodies (4 to 10 triangle fixtures) dropped in a bin",
+        900, 300},
+       detail::build_stack_concave},
+      {{"rain", "500 triangles of mixed sizes falling into a bin of triangle fixtures", 900, 300},
+       detail::build_rain},
+      {{"tumbler", "300 triangles in a kinematic drum of triangle fixtures turning at 0.3 rad/s",
+        900, 300},
+       detail::build_tumbler},
+      {{"slivers", "thin (1/20 to 1/140), tiny (1-5 cm) and large (2-3 m) triangles in a bin", 600,
+        300},
+       detail::build_slivers},
+      {{"slivers-far", "the slivers scene moved 10 km from the origin", 600, 300},
+       detail::build_slivers_far},
+      {{"mixed",
+        "triangles, boxes and circles on an edge ground: only triangle pairs use the "
+        "plug-in",
+        600, 300},
+       detail::build_mixed},
+  };
+  return list;
+}
+
+const Entry* find_entry(std::string_view name) {
+  for (const Entry& e : entries()) {
+    if (name == e.info.name) return &e;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const std::vector<SceneInfo>& scene_catalog() {
+  static const std::vector<SceneInfo> infos = [] {
+    std::vector<SceneInfo> out;
+    for (const Entry& e : entries()) out.push_back(e.info);
+    return out;
+  }();
+  return infos;
+}
+
+const SceneInfo* find_scene(std::string_view name) {
+  const Entry* e = find_entry(name);
+  return e ? &e->info : nullptr;
+}
+
+std::optional<box2d::Backend> parse_backend(std::string_view name) {
+  for (box2d::Backend b : box2d::all_backends) {
+    if (name == box2d::name(b)) return b;
+  }
+  return std::nullopt;
+}
+
+std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend,
+                                  std::uint64_t seed) {
+  const Entry* e = find_entry(name);
+  if (e == nullptr) throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
+  if (e->build == nullptr) return paper::make_scene(backend, seed);
+  return std::make_unique<WorldScene>(e->info.name, backend, seed, e->build);
+}
+
+SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
+                       Drawing* final_state) {
+  const std::unique_ptr<Scene> scene = make_scene(name, backend, seed);
+  for (int i = 0; i < steps; ++i) scene->step();
+  if (final_state != nullptr) *final_state = scene->drawing();
+  return scene->metrics();
+}
+
+}  // namespace dyop::scenes

@@ -1,0 +1,133 @@
+#include "scenes/contact_probe.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <functional>
+
+#include "dyop/sat.hpp"
+#include "scenes/backend_depth.hpp"
+#include "scenes/world.hpp"
+
+namespace dyop::scenes {
+namespace {
+
+const b2PolygonShape& polygon(const b2Fixture* f) {
+  return *static_cast<const b2PolygonShape*>(f->GetShape());
+}
+
+Vec2<float> to_vec(const b2Vec2& v) { return {v.x, v.y}; }
+
+// Box2D's broad phase calls this for every proxy a query meets; its user data is the fixture's
+// proxy record, which is where the proxy id lives (the fixture keeps it in a protected member).
+struct ProxyCollector {
+  const b2BroadPhase* broad_phase;
+  std::unordered_map<const b2Fixture*, int>* proxy;
+  bool QueryCallback(int32 id) {
+    const auto* p = static_cast<const b2FixtureProxy*>(broad_phase->GetUserData(id));
+    (*proxy)[p->fixture] = id;
+    return true;
+  }
+};
+
+// Collide skips a contact unless one of its bodies is awake and can move.
+bool active(const b2Body* body) { return body->IsAwake() && body->GetType() != b2_staticBody; }
+
+}  // namespace
+
+std::size_t ContactProbe::PairHash::operator()(
+    const std::pair<const b2Fixture*, const b2Fixture*>& p) const {
+  const std::size_t a = std::hash<const void*>()(p.first);
+  return a ^ (std::hash<const void*>()(p.second) + 0x9e3779b97f4a7c15ull + (a << 6) + (a >> 2));
+}
+
+ContactProbe::ContactProbe(box2d::Backend backend, const b2World& world) : backend_(backend) {
+  const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
+  ProxyCollector collector{&bp, &proxy_};
+  b2AABB everything;
+  everything.lowerBound.Set(-FLT_MAX, -FLT_MAX);
+  everything.upperBound.Set(FLT_MAX, FLT_MAX);
+  bp.Query(&collector, everything);
+}
+
+ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally& errors) {
+  ++pass_;
+  Updates u;
+  const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
+  for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
+    const b2Fixture* fa = c->GetFixtureA();
+    const b2Fixture* fb = c->GetFixtureB();
+    if (!active(fa->GetBody()) && !active(fb->GetBody())) continue;
+    if (!bp.TestOverlap(proxy_.at(fa), proxy_.at(fb))) continue;  // Collide destroys it
+    ++u.contacts;
+    if (!is_triangle(fa) || !is_triangle(fb)) continue;
+    ++u.triangles;
+
+    Cache& cache = caches_[{fa, fb}];
+    if (cache.seen + 1 != pass_) cache.cache = LinCannyCache{};  // a new contact starts cold
+    cache.seen = pass_;
+
+    // The plug-in's inputs: A as stored, B moved into A's body frame, in float.
+    const b2PolygonShape& a = polygon(fa);
+    const b2PolygonShape& b = polygon(fb);
+    const b2Transform b_in_a = b2MulT(fa->GetBody()->GetTransform(), fb->GetBody()->GetTransform());
+    const b2Vec2 vb[3] = {b2Mul(b_in_a, b.m_vertices[0]), b2Mul(b_in_a, b.m_vertices[1]),
+                          b2Mul(b_in_a, b.m_vertices[2])};
+    const TriangleOrError<float> ta = Triangle<float>::make(
+        to_vec(a.m_vertices[0]), to_vec(a.m_vertices[1]), to_vec(a.m_vertices[2]));
+    const TriangleOrError<float> tb =
+        Triangle<float>::make(to_vec(vb[0]), to_vec(vb[1]), to_vec(vb[2]));
+    if (!ta.ok() || !tb.ok()) {
+      errors.add(Status::Invalid, 0, 0, 0);  // the plug-in falls back to Box2D on this pair
+      continue;
+    }
+    const Result<float> r = backend_depth(backend_, ta.triangle, tb.triangle, &cache.cache);
+    auto widen = [](const Triangle<float>& t) {
+      return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),
+                                    t.vertex(2).cast<double>());
+    };
+    const TriangleOrError<double> xa = widen(ta.triangle);
+    const TriangleOrError<double> xb = widen(tb.triangle);
+    if (!xa.ok() || !xb.ok()) continue;  // valid in float, hence in double: never taken
+    const Result<double> exact = sat(xa.triangle, xb.triangle);
+    const double band = static_cast<double>(touching_tolerance<float>()) *
+                        std::max(xa.triangle.size(), xb.triangle.size());
+    errors.add(r.status, r.depth, exact.separation, band);
+  }
+  // Contacts not met this pass are gone; forget their caches.
+  for (auto it = caches_.begin(); it != caches_.end();) {
+    it = it->second.seen == pass_ ? std::next(it) : caches_.erase(it);
+  }
+  return u;
+}
+
+void ContactProbe::measure_penetration(const b2World& world, PenetrationTally& depths) {
+  for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
+    if (!c->IsTouching()) continue;
+    const b2Fixture* fa = c->GetFixtureA();
+    const b2Fixture* fb = c->GetFixtureB();
+    if (!is_triangle(fa) || !is_triangle(fb)) continue;
+    // B's vertices in A's body frame, in double from the float transforms.
+    const b2Transform& xa = fa->GetBody()->GetTransform();
+    const b2Transform& xb = fb->GetBody()->GetTransform();
+    const double ca = xa.q.c, sa = xa.q.s, cb = xb.q.c, sb = xb.q.s;
+    const double dx = double(xb.p.x) - double(xa.p.x), dy = double(xb.p.y) - double(xa.p.y);
+    const double c_rel = ca * cb + sa * sb, s_rel = ca * sb - sa * cb;
+    const Vec2<double> t(ca * dx + sa * dy, -sa * dx + ca * dy);
+    const b2PolygonShape& a = polygon(fa);
+    const b2PolygonShape& b = polygon(fb);
+    Vec2<double> va[3], vb[3];
+    for (int i = 0; i < 3; ++i) {
+      va[i] = Vec2<double>(a.m_vertices[i].x, a.m_vertices[i].y);
+      const double x = b.m_vertices[i].x, y = b.m_vertices[i].y;
+      vb[i] = Vec2<double>(c_rel * x - s_rel * y, s_rel * x + c_rel * y) + t;
+    }
+    const TriangleOrError<double> ta = Triangle<double>::make(va[0], va[1], va[2]);
+    const TriangleOrError<double> tb = Triangle<double>::make(vb[0], vb[1], vb[2]);
+    if (!ta.ok() || !tb.ok()) continue;
+    depths.add(sat(ta.triangle, tb.triangle).depth);
+  }
+}
+
+}  // namespace dyop::scenes

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// Measures a Box2D world's narrow phase from outside `b2World::Step`, without changing what the
+/// step does.
+///
+/// Before a step, `ContactProbe::before_step` walks the world's contacts and picks exactly those
+/// `b2ContactManager::Collide` is about to update (Box2D 2.4.1's rule: at least one body awake and
+/// not static, and the two proxies' fat AABBs still overlapping; filters never change in the
+/// scenes). It counts them, and re-evaluates every triangle pair among them twice, untimed, on the
+/// plug-in's own inputs (A's vertices as stored, B's moved into A's body frame by
+/// `b2MulT(xfA, xfB)`, in float):
+/// - with the backend at `Level::Depth` (Lin–Canny warm-started by a cache per fixture pair that
+///   lives as long as the contact does, like the plug-in's; `box2d`:
+///   `dyop::box2d::collide_triangles`, the deepest point of `b2CollidePolygons`' manifold);
+/// - with the exact reference, `dyop::sat` in double on the same float vertices.
+/// The plug-in itself answers at `Level::Manifold`; the depth is the part of that answer the
+/// exact reference can check.
+///
+/// After a step, `measure_penetration` takes the exact depth (`sat` in double, B moved into A's
+/// frame in double) of every touching triangle pair: how far the cores overlap.
+
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+
+#include "dyop/box2d.hpp"
+#include "scenes/metrics.hpp"
+
+class b2World;
+class b2Fixture;
+
+namespace dyop::scenes {
+
+class ContactProbe {
+ public:
+  /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
+  ContactProbe(box2d::Backend backend, const b2World& world);
+
+  /// What the next step's `Collide` will update.
+  struct Updates {
+    std::uint64_t contacts = 0;   ///< every contact
+    std::uint64_t triangles = 0;  ///< triangle–triangle contacts
+  };
+
+  /// Counts the updates of the coming step and adds the triangle pairs' errors to `errors`.
+  Updates before_step(const b2World& world, ErrorTally& errors);
+
+  /// Adds the exact depth of every touching triangle pair to `depths`.
+  static void measure_penetration(const b2World& world, PenetrationTally& depths);
+
+ private:
+  struct PairHash {
+    std::size_t operator()(const std::pair<const b2Fixture*, const b2Fixture*>& p) const;
+  };
+  struct Cache {
+    LinCannyCache cache;
+    std::uint64_t seen = 0;  ///< the last pass that met the pair's contact
+  };
+
+  box2d::Backend backend_;
+  std::unordered_map<const b2Fixture*, int> proxy_;
+  std::unordered_map<std::pair<const b2Fixture*, const b2Fixture*>, Cache, PairHash> caches_;
+  std::uint64_t pass_ = 0;
+};
+
+}  // namespace dyop::scenes

@@ -1,0 +1,65 @@
+#include "scenes/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace dyop::scenes {
+
+void ErrorTally::add(Status status, double depth, double exact_separation, double band) {
+  ++evaluated_;
+  if (status == Status::Invalid) {
+    ++invalid_;
+    return;
+  }
+  const double exact_depth = std::max(0.0, -exact_separation);
+  const double error = std::abs(depth - exact_depth);
+  max_ = std::max(max_, error);
+  // Pairs that are apart by both accounts (most of what a broad phase lets through) would only
+  // dilute the mean with exact zeros.
+  if (depth > 0 || exact_depth > 0) {
+    sum_ += error;
+    ++overlapping_;
+  }
+  const bool says_penetrating = status == Status::Penetrating;
+  if ((says_penetrating && exact_separation > band) ||
+      (!says_penetrating && exact_separation < -band)) {
+    ++misclassified_;
+  }
+}
+
+void PenetrationTally::add(double depth) {
+  max_ = std::max(max_, depth);
+  sum_ += depth;
+  ++count_;
+}
+
+void Fnv1a::bytes(const unsigned char* p, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    h_ ^= p[i];
+    h_ *= 0x100000001b3ull;
+  }
+}
+
+void Fnv1a::add(float v) {
+  unsigned char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  bytes(b, sizeof b);
+}
+
+void Fnv1a::add(double v) {
+  unsigned char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  bytes(b, sizeof b);
+}
+
+bool all_finite(const SceneMetrics& m) {
+  const double values[] = {
+      m.step_ms_median,  m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
+      m.max_penetration, m.mean_penetration,     m.pd_error_max,
+      m.pd_error_mean,   m.kinetic_energy_final, m.top_displacement.value_or(0.0)};
+  return std::all_of(std::begin(values), std::end(values),
+                     [](double v) { return std::isfinite(v); });
+}
+
+}  // namespace dyop::scenes

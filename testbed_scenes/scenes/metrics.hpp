@@ -1,0 +1,117 @@
+#pragma once
+/// \file
+/// What a scene run reports (`SceneMetrics`, the keys of `dyop scene --json`) and the tallies
+/// that build it.
+///
+/// Units: metres, seconds (milliseconds and nanoseconds where the name says so), joules for a
+/// density of 1 kg/m². Depths are penetration depths of the triangles themselves (their cores,
+/// not Box2D's 1 cm skins), ≥ 0.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "dyop/result.hpp"
+
+namespace dyop::scenes {
+
+/// The figures of one scene run under one backend.
+struct SceneMetrics {
+  std::string scene;       ///< scene name
+  std::string backend;     ///< backend name ("dyop", ..., "box2d")
+  std::uint64_t seed = 0;  ///< the seed the scene was built with
+  int steps = 0;           ///< steps run
+  int bodies = 0;          ///< bodies (static and kinematic ones included)
+  int triangles = 0;       ///< triangle fixtures (paper: the 10 triangles)
+  /// Triangle pairs the narrow phase evaluated in the measured steps (Box2D scenes: the
+  /// triangle–triangle contacts `b2ContactManager::Collide` updated in steps 2..N; paper: the
+  /// pairs whose bounding boxes overlap, every step).
+  std::uint64_t triangle_pairs = 0;
+  /// Every contact update in the measured steps, whatever the shapes (= `triangle_pairs` but in
+  /// `mixed`, where circles, boxes and edges have contacts of their own).
+  std::uint64_t contact_updates = 0;
+  /// Box2D scenes: triangle pairs the plug-in evaluated in all (`stats()`), step 1 and the
+  /// re-evaluations of Box2D's time-of-impact sub-steps included. None for `paper`.
+  std::optional<std::uint64_t> plugin_evaluations;
+  /// Box2D scenes: pairs the backend could not answer, answered by Box2D instead (`stats()`);
+  /// 0 means every triangle pair was the backend's. None for `paper`.
+  std::optional<std::uint64_t> fallbacks;
+  double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
+  /// Narrow-phase time over the measured steps (ms): Box2D scenes, the sum of
+  /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);
+  /// paper, the time of the backend's calls.
+  double narrowphase_ms_total = 0;
+  /// `narrowphase_ms_total` per contact update (ns). Box2D scenes: includes Box2D's own per-contact
+  /// work around the call (the broad-phase overlap test, manifold bookkeeping, warm-start match).
+  double narrowphase_ns_per_pair = 0;
+  /// Deepest exact penetration over the touching triangle pairs after each step (m).
+  double max_penetration = 0;
+  double mean_penetration = 0;  ///< mean of the same over every (pair, step) sample (m)
+  /// Largest |backend depth − exact depth| over the pairs the backend evaluated (m).
+  double pd_error_max = 0;
+  /// Mean of the same over the evaluated pairs that penetrate by either account (m).
+  double pd_error_mean = 0;
+  /// Evaluated pairs that the backend called penetrating while exactly apart by more than the
+  /// touching band, or not penetrating while exactly deeper than it.
+  std::uint64_t misclassified = 0;
+  std::uint64_t invalid = 0;        ///< evaluated pairs the backend answered `Invalid`
+  double kinetic_energy_final = 0;  ///< Σ ½mv² + ½Iω² of the moving bodies after the last step (J)
+  /// Scenes that should stand (pyramids, stacks): largest distance of a top body from where it
+  /// was after the first second (`settle_steps`), over the rest of the run (m). None for the
+  /// other scenes and for runs of less than a second.
+  std::optional<double> top_displacement;
+  bool nan_detected = false;  ///< a non-finite body state or figure appeared
+  std::uint64_t hash = 0;     ///< FNV-1a of the final body states: equal seeds, equal hashes
+};
+
+/// Backend depths against exact ones, pair by pair.
+class ErrorTally {
+ public:
+  /// One evaluated pair: the backend's answer (`depth` ≥ 0, as `Result::depth`), the exact signed
+  /// separation, and the touching band (length) inside which either classification is right.
+  void add(Status status, double depth, double exact_separation, double band);
+  double max() const { return max_; }
+  double mean() const { return overlapping_ > 0 ? sum_ / static_cast<double>(overlapping_) : 0; }
+  std::uint64_t misclassified() const { return misclassified_; }
+  std::uint64_t invalid() const { return invalid_; }
+  std::uint64_t evaluated() const { return evaluated_; }
+
+ private:
+  double max_ = 0;
+  double sum_ = 0;
+  std::uint64_t overlapping_ = 0;
+  std::uint64_t misclassified_ = 0;
+  std::uint64_t invalid_ = 0;
+  std::uint64_t evaluated_ = 0;
+};
+
+/// Exact penetration depths of touching pairs, sample by sample.
+class PenetrationTally {
+ public:
+  void add(double depth);
+  double max() const { return max_; }
+  double mean() const { return count_ > 0 ? sum_ / static_cast<double>(count_) : 0; }
+  std::uint64_t count() const { return count_; }
+
+ private:
+  double max_ = 0;
+  double sum_ = 0;
+  std::uint64_t count_ = 0;
+};
+
+/// FNV-1a (64-bit), fed value by value with the bit patterns of floats.
+class Fnv1a {
+ public:
+  void add(float v);
+  void add(double v);
+  std::uint64_t value() const { return h_; }
+
+ private:
+  void bytes(const unsigned char* p, std::size_t n);
+  std::uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+/// True when every floating-point figure of `m` is finite.
+bool all_finite(const SceneMetrics& m);
+
+}  // namespace dyop::scenes

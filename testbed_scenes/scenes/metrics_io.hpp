@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// `SceneMetrics` as JSON (one object, `dyop scene --json`) and as CSV rows (`dyop compare`).
+/// Non-finite numbers are written as JSON `null` (CSV: empty), and such a record has
+/// `nan_detected` true. The hash is written as 16 hexadecimal digits in a string: JSON numbers
+/// lose integers above 2⁵³.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "scenes/metrics.hpp"
+
+namespace dyop::scenes {
+
+/// The JSON object's keys, in the order written (also the CSV columns).
+const std::vector<std::string>& metrics_keys();
+
+/// One JSON object, indented, with a final newline.
+void write_json(const SceneMetrics& m, std::ostream& out);
+
+/// The CSV header: `metrics_keys` joined by commas.
+std::string csv_header();
+
+/// One CSV line (no newline) in `csv_header` order; numbers with 9 significant digits.
+std::string csv_row(const SceneMetrics& m);
+
+/// The hash as written: 16 lower-case hexadecimal digits.
+std::string hash_hex(std::uint64_t hash);
+
+}  // namespace dyop::scenes

@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// The headless scenes: each a small type that is created for a backend and a seed, stepped, and
+/// measured. Equal seeds give equal scenes and equal final states (`SceneMetrics::hash`).
+///
+/// Box2D scenes (everything but `paper`) install the backend in the Box2D plug-in before their
+/// bodies exist and uninstall it when destroyed: Box2D's contact registry is process-wide, so
+/// only one such scene may exist at a time. `box2d` is Box2D's own `b2CollidePolygons` routed
+/// through the same plug-in (bit-identical to Box2D's own polygon contact, and counted alike).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "dyop/box2d.hpp"
+#include "scenes/metrics.hpp"
+#include "scenes/svg.hpp"
+
+namespace dyop::scenes {
+
+/// A scene being run.
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  /// Advances one step (Box2D scenes: 1/60 s; paper: 1/30 s) and measures it.
+  virtual void step() = 0;
+  /// The figures so far.
+  virtual SceneMetrics metrics() const = 0;
+  /// The current state, to draw.
+  virtual Drawing drawing() const = 0;
+};
+
+/// A scene of the catalogue.
+struct SceneInfo {
+  const char* name;         ///< "paper", "pyramid", ...
+  const char* description;  ///< one line: what is in it
+  int default_steps;        ///< `dyop scene` without `--steps`, and `dyop compare` (full)
+  int quick_steps;          ///< `dyop compare --quick`
+};
+
+/// Every scene, in the order the reports list them.
+const std::vector<SceneInfo>& scene_catalog();
+
+/// The scene called `name`, or nullptr.
+const SceneInfo* find_scene(std::string_view name);
+
+/// The backend spelt `name` ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or nothing.
+std::optional<box2d::Backend> parse_backend(std::string_view name);
+
+/// Creates scene `name` for `backend` and `seed`. Throws `std::invalid_argument` for an unknown
+/// name and `std::runtime_error` when the plug-in refuses the backend (another scene alive).
+std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend,
+                                  std::uint64_t seed);
+
+/// Creates, runs `steps` steps, and returns the figures (and the final state when `final_state`
+/// is given).
+SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
+                       Drawing* final_state = nullptr);
+
+}  // namespace dyop::scenes

@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// `dyop scene NAME --backend B [--steps N] [--seed S] [--json FILE|-] [--svg FILE|-]`: runs one
+/// scene under one backend, prints a short summary, and writes the figures as JSON and the final
+/// state as SVG. The command line (CLI11) validates names; this checks files and runs.
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "scenes/metrics.hpp"
+
+namespace dyop::scenes {
+
+struct SceneCommand {
+  std::string scene;         ///< a name of `scene_catalog()`
+  std::string backend;       ///< "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"
+  std::optional<int> steps;  ///< none: the scene's default
+  std::uint64_t seed = 0;
+  std::string json;  ///< empty: none; "-": `out`
+  std::string svg;   ///< empty: none; "-": `out`
+};
+
+/// Runs the command. Output files are opened before the scene runs, so an unwritable path fails
+/// at once. The summary goes to `out`, or to `err` when the JSON or SVG goes to `out`. Returns
+/// 0, 1 (usage: unknown name, both outputs on standard output) or 2 (a file cannot be written, or
+/// the scene could not run), with the reason on `err`.
+int run_scene_command(const SceneCommand& command, std::ostream& out, std::ostream& err);
+
+/// A few readable lines about one run (what `dyop scene` prints).
+void write_summary(const SceneMetrics& m, std::ostream& out);
+
+}  // namespace dyop::scenes

@@ -1,0 +1,173 @@
+#include "scenes/world_scene.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace dyop::scenes {
+namespace {
+
+bool finite(const b2Vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+bool finite_state(const b2Body* b) {
+  return finite(b->GetPosition()) && std::isfinite(b->GetAngle()) &&
+         finite(b->GetLinearVelocity()) && std::isfinite(b->GetAngularVelocity());
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+// A body-frame point in world coordinates, in double: exact enough 10 km from the origin.
+Vec2<double> world_point(const b2Transform& xf, const b2Vec2& v) {
+  const double c = xf.q.c, s = xf.q.s;
+  return {double(xf.p.x) + c * v.x - s * v.y, double(xf.p.y) + s * v.x + c * v.y};
+}
+
+}  // namespace
+
+WorldScene::Installation::Installation(box2d::Backend backend) {
+  const box2d::InstallResult r = box2d::install(backend);
+  if (!r.ok()) throw std::runtime_error(std::string("cannot install the backend: ") + r.message);
+  box2d::reset_stats();
+}
+
+WorldScene::Installation::~Installation() { box2d::uninstall(); }
+
+WorldScene::WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
+                       WorldBuilder build)
+    : name_(std::move(name)),
+      backend_(backend),
+      seed_(seed),
+      installation_(backend),
+      world_(std::make_unique<World>()) {
+  Rng rng(seed);
+  build_ = build(*world_, rng);
+  probe_ = std::make_unique<ContactProbe>(backend, world_->get());
+}
+
+WorldScene::~WorldScene() { world_.reset(); }
+
+void WorldScene::step() {
+  const bool measured = steps_ > 0;  // step 1's contacts are created inside Step
+  const ContactProbe::Updates u = probe_->before_step(world_->get(), errors_);
+
+  const auto start = std::chrono::steady_clock::now();
+  world_->step();
+  const auto end = std::chrono::steady_clock::now();
+  ++steps_;
+  step_ms_.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+  if (measured) {
+    collide_ms_ += world_->get().GetProfile().collide;
+    updates_.contacts += u.contacts;
+    updates_.triangles += u.triangles;
+  }
+
+  ContactProbe::measure_penetration(world_->get(), penetration_);
+  for (const b2Body* b : world_->bodies()) nan_ = nan_ || !finite_state(b);
+  if (steps_ == settle_steps) {
+    for (const b2Body* b : build_.watched) watched_start_.push_back(b->GetPosition());
+  }
+  for (std::size_t i = 0; i < watched_start_.size(); ++i) {
+    const double d = (build_.watched[i]->GetPosition() - watched_start_[i]).Length();
+    top_displacement_ = std::max(top_displacement_, d);
+  }
+}
+
+SceneMetrics WorldScene::metrics() const {
+  SceneMetrics m;
+  m.scene = name_;
+  m.backend = box2d::name(backend_);
+  m.seed = seed_;
+  m.steps = steps_;
+  Fnv1a hash;
+  for (const b2Body* b : world_->bodies()) {
+    ++m.bodies;
+    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+      m.triangles += is_triangle(f);
+    }
+    hash.add(b->GetPosition().x);
+    hash.add(b->GetPosition().y);
+    hash.add(b->GetAngle());
+    hash.add(b->GetLinearVelocity().x);
+    hash.add(b->GetLinearVelocity().y);
+    hash.add(b->GetAngularVelocity());
+    if (b->GetType() == b2_dynamicBody) {
+      // GetInertia is about the body origin; the energy wants it about the centre of mass.
+      const double mass = b->GetMass();
+      const double inertia =
+          b->GetInertia() - mass * b2Dot(b->GetLocalCenter(), b->GetLocalCenter());
+      const double v2 = b2Dot(b->GetLinearVelocity(), b->GetLinearVelocity());
+      const double w = b->GetAngularVelocity();
+      m.kinetic_energy_final += 0.5 * mass * v2 + 0.5 * inertia * w * w;
+    }
+  }
+  m.hash = hash.value();
+  m.triangle_pairs = updates_.triangles;
+  m.contact_updates = updates_.contacts;
+  const box2d::Stats s = box2d::stats();
+  m.plugin_evaluations = s.triangles(backend_);
+  m.fallbacks = s.fallbacks;
+  m.step_ms_median = median(step_ms_);
+  m.narrowphase_ms_total = collide_ms_;
+  m.narrowphase_ns_per_pair =
+      updates_.contacts > 0 ? collide_ms_ * 1e6 / static_cast<double>(updates_.contacts) : 0;
+  m.max_penetration = penetration_.max();
+  m.mean_penetration = penetration_.mean();
+  m.pd_error_max = errors_.max();
+  m.pd_error_mean = errors_.mean();
+  m.misclassified = errors_.misclassified();
+  m.invalid = errors_.invalid();
+  if (!watched_start_.empty()) m.top_displacement = top_displacement_;
+  m.nan_detected = nan_ || !all_finite(m);
+  return m;
+}
+
+Drawing WorldScene::drawing() const {
+  Drawing d;
+  d.title = name_ + " / " + box2d::name(backend_) + ", seed " + std::to_string(seed_) + ", step " +
+            std::to_string(steps_);
+  for (const b2Body* b : world_->bodies()) {
+    DrawShape::Role role = b->GetType() == b2_staticBody      ? DrawShape::Role::Static
+                           : b->GetType() == b2_kinematicBody ? DrawShape::Role::Kinematic
+                                                              : DrawShape::Role::Dynamic;
+    const b2Transform& xf = b->GetTransform();
+    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+      DrawShape s;
+      s.role = role;
+      switch (f->GetType()) {
+        case b2Shape::e_polygon: {
+          const auto* p = static_cast<const b2PolygonShape*>(f->GetShape());
+          for (int i = 0; i < p->m_count; ++i)
+            s.points.push_back(world_point(xf, p->m_vertices[i]));
+          break;
+        }
+        case b2Shape::e_circle: {
+          const auto* c = static_cast<const b2CircleShape*>(f->GetShape());
+          s.kind = DrawShape::Kind::Circle;
+          s.radius = c->m_radius;
+          s.points.push_back(world_point(xf, c->m_p));
+          s.points.push_back(world_point(xf, c->m_p + b2Vec2(c->m_radius, 0.0f)));
+          break;
+        }
+        case b2Shape::e_edge: {
+          const auto* e = static_cast<const b2EdgeShape*>(f->GetShape());
+          s.kind = DrawShape::Kind::Segment;
+          s.points.push_back(world_point(xf, e->m_vertex1));
+          s.points.push_back(world_point(xf, e->m_vertex2));
+          break;
+        }
+        default: continue;  // the scenes make no chains
+      }
+      d.shapes.push_back(std::move(s));
+    }
+  }
+  return d;
+}
+
+}  // namespace dyop::scenes

@@ -1,0 +1,81 @@
+#pragma once
+/// \file
+/// The Box2D scenes' common machinery: install the backend, build the world, step it, measure.
+///
+/// Per step, untimed: `ContactProbe::before_step` (counts and depth errors of the contacts the
+/// step will update); timed: `World::step` (steady_clock around `b2World::Step`) and, inside it,
+/// Box2D's own `GetProfile().collide`; untimed again: the exact penetration of touching triangle
+/// pairs, non-finite states, the top bodies' displacement from where they were after
+/// `settle_steps`. Step 1 is left out of the narrow-phase
+/// figures: its contacts are created inside `Step`, so the probe cannot see them beforehand.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scenes/contact_probe.hpp"
+#include "scenes/random.hpp"
+#include "scenes/scene.hpp"
+#include "scenes/world.hpp"
+
+namespace dyop::scenes {
+
+/// What a builder says about the world it built.
+struct WorldBuild {
+  /// Bodies that should not move much if the structure stands (top of a pyramid or a stack);
+  /// empty when the scene is not meant to stand.
+  std::vector<b2Body*> watched;
+};
+
+/// Steps a structure is given to settle before its top bodies are watched (1 s): a pyramid of
+/// wedged triangles sinks into place by centimetres per row, which is not falling.
+inline constexpr int settle_steps = 60;
+
+/// Fills an empty world (gravity −10 m/s² along y) for a seed.
+using WorldBuilder = WorldBuild (*)(World& world, Rng& rng);
+
+/// A Box2D scene.
+class WorldScene : public Scene {
+ public:
+  /// Installs `backend` in the plug-in (throws `std::runtime_error` if refused), then builds.
+  WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed, WorldBuilder build);
+  ~WorldScene() override;
+
+  void step() override;
+  SceneMetrics metrics() const override;
+  Drawing drawing() const override;
+
+  /// The world, for tests that look inside.
+  const World& world() const { return *world_; }
+
+ private:
+  // Uninstalls the backend when the scene goes, also when building it threw: declared before the
+  // world so that it outlives it (the world's contacts must be gone before uninstalling).
+  struct Installation {
+    explicit Installation(box2d::Backend backend);
+    ~Installation();
+    Installation(const Installation&) = delete;
+    Installation& operator=(const Installation&) = delete;
+  };
+
+  std::string name_;
+  box2d::Backend backend_;
+  std::uint64_t seed_;
+  Installation installation_;
+  std::unique_ptr<World> world_;
+  WorldBuild build_;
+  std::vector<b2Vec2> watched_start_;
+  std::unique_ptr<ContactProbe> probe_;
+
+  int steps_ = 0;
+  std::vector<double> step_ms_;
+  double collide_ms_ = 0;
+  ContactProbe::Updates updates_;
+  ErrorTally errors_;
+  PenetrationTally penetration_;
+  double top_displacement_ = 0;
+  bool nan_ = false;
+};
+
+}  // namespace dyop::scenes

@@ -1,0 +1,110 @@
+// `dyop scene` and `dyop compare` as a user runs them: the program itself, with its exit status.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Outcome {
+  int status = -1;  // the program's exit status
+  std::string out;  // standard output (standard error goes to `err`)
+  std::string err;
+};
+
+// A fresh directory per test process: ctest runs the tests of this file in parallel.
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("dyop_scene_cli_" + std::to_string(getpid()) + "_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+Outcome run(const std::string& args) {
+  const std::string err_file = (temp_dir("stderr") / "err.txt").string();
+  const std::string command = std::string(DYOP_PROGRAM) + " " + args + " 2>" + err_file;
+  Outcome r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return r;
+  std::array<char, 4096> buf;
+  for (std::size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;)
+    r.out.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_file);
+  r.err.assign(std::istreambuf_iterator<char>(err), {});
+  return r;
+}
+
+TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
+  const Outcome scene = run("scene nope --backend dyop");
+  EXPECT_EQ(scene.status, 1);
+  EXPECT_NE(scene.err.find("nope"), std::string::npos) << scene.err;
+  const Outcome backend = run("scene pyramid --backend nope");
+  EXPECT_EQ(backend.status, 1);
+  EXPECT_NE(backend.err.find("nope"), std::string::npos) << backend.err;
+  EXPECT_EQ(run("scene pyramid").status, 1) << "--backend is required";
+  EXPECT_EQ(run("scene pyramid --backend dyop --steps 0").status, 1);
+  EXPECT_EQ(run("scene pyramid --backend dyop --json - --svg -").status, 1);
+  EXPECT_EQ(run("compare --scene nope").status, 1);
+}
+
+TEST(SceneCli, UnwritableOutputIsAnIoError) {
+  // A regular file where a directory should be: unwritable even for root.
+  const auto dir = temp_dir("unwritable");
+  std::ofstream(dir / "file") << "x";
+  const std::string bad = (dir / "file" / "out.json").string();
+  const Outcome json = run("scene stack --backend dyop --steps 2 --json " + bad);
+  EXPECT_EQ(json.status, 2);
+  EXPECT_NE(json.err.find("cannot write"), std::string::npos) << json.err;
+  EXPECT_EQ(run("scene stack --backend dyop --steps 2 --svg " + bad).status, 2);
+  const Outcome compare =
+      run("compare --quick --steps 1 --out " + (dir / "file" / "report").string());
+  EXPECT_EQ(compare.status, 2);
+  EXPECT_NE(compare.err.find("cannot write"), std::string::npos) << compare.err;
+}
+
+TEST(SceneCli, JsonToStandardOutputIsOneValidObjectAndTheSummaryGoesToStandardError) {
+  const Outcome r = run("scene mixed --backend sat --steps 20 --seed 3 --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scene"], "mixed");
+  EXPECT_EQ(j["backend"], "sat");
+  EXPECT_EQ(j["seed"], 3);
+  EXPECT_NE(r.err.find("scene mixed / sat"), std::string::npos) << r.err;
+}
+
+TEST(SceneCli, WritesTheSummaryAndTheFiles) {
+  const auto dir = temp_dir("files");
+  const Outcome r = run("scene paper --backend box2d --steps 10 --json " +
+                        (dir / "m.json").string() + " --svg " + (dir / "s.svg").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("scene paper / box2d"), std::string::npos) << r.out;
+  std::ifstream json(dir / "m.json");
+  const nlohmann::json j = nlohmann::json::parse(json, nullptr, false);  // discarded if invalid
+  EXPECT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["steps"], 10);
+  std::ifstream svg(dir / "s.svg");
+  const std::string text(std::istreambuf_iterator<char>(svg), {});
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("</svg>"), std::string::npos);
+  std::size_t polygons = 0;
+  for (std::size_t at = 0; (at = text.find("<polygon", at)) != std::string::npos; ++at) ++polygons;
+  EXPECT_EQ(polygons, 10u) << "the ten triangles of the paper scene";
+}
+
+TEST(SceneCli, SvgToStandardOutput) {
+  const Outcome r = run("scene stack --backend box2d --steps 2 --svg -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("<?xml", 0), 0u);
+  EXPECT_NE(r.out.find("<polygon"), std::string::npos);
+}
+
+}  // namespace
