@@ -7,16 +7,12 @@
 #include "dyop/dyop.hpp"
 #include "dyop/sat.hpp"
 #include "workloads/exact_reference.hpp"
+#include "support/make_triangle.hpp"
 
 namespace dyop::workloads {
 namespace {
 
-template <class T>
-Triangle<T> tri(T x0, T y0, T x1, T y1, T x2, T y2) {
-  auto t = Triangle<T>::make(Vec2<T>(x0, y0), Vec2<T>(x1, y1), Vec2<T>(x2, y2));
-  EXPECT_TRUE(t.ok());
-  return t.triangle;
-}
+using test_support::tri;
 
 // Touching and penetrating pairs: the same six overlaps, so the same bits. Apart: dyop's pivot
 // finds the closest features its own way and certifies them to within the touching band.

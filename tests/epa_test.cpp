@@ -12,6 +12,7 @@
 #include "dyop/epa.hpp"
 #include "dyop/sat.hpp"
 #include "workloads/pair_classes.hpp"
+#include "support/make_triangle.hpp"
 
 namespace dyop {
 namespace {
@@ -21,12 +22,7 @@ class Epa : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(Epa, Scalars);
 
-template <class T>
-Triangle<T> tri(T x0, T y0, T x1, T y1, T x2, T y2) {
-  auto t = Triangle<T>::make(Vec2<T>(x0, y0), Vec2<T>(x1, y1), Vec2<T>(x2, y2));
-  EXPECT_TRUE(t.ok());
-  return t.triangle;
-}
+using test_support::tri;
 
 // Hand-worked answers on triangles of size ~1-10: a few hundred eps of either scalar.
 template <class T>

@@ -12,6 +12,7 @@
 #include "dyop/lin_canny.hpp"
 #include "dyop/sat.hpp"
 #include "workloads/pair_classes.hpp"
+#include "support/make_triangle.hpp"
 
 namespace dyop::workloads {
 namespace {
@@ -21,12 +22,7 @@ class LinCanny : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(LinCanny, Scalars);
 
-template <class T>
-Triangle<T> tri(T x0, T y0, T x1, T y1, T x2, T y2) {
-  auto t = Triangle<T>::make(Vec2<T>(x0, y0), Vec2<T>(x1, y1), Vec2<T>(x2, y2));
-  EXPECT_TRUE(t.ok());
-  return t.triangle;
-}
+using test_support::tri;
 
 template <class T>
 T tol() {

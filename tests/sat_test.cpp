@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "dyop/sat.hpp"
+#include "support/make_triangle.hpp"
 
 namespace dyop {
 namespace {
@@ -11,12 +12,7 @@ class Sat : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(Sat, Scalars);
 
-template <class T>
-Triangle<T> tri(T x0, T y0, T x1, T y1, T x2, T y2) {
-  auto t = Triangle<T>::make(Vec2<T>(x0, y0), Vec2<T>(x1, y1), Vec2<T>(x2, y2));
-  EXPECT_TRUE(t.ok());
-  return t.triangle;
-}
+using test_support::tri;
 
 template <class T>
 T tol() {
