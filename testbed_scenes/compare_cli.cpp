@@ -17,8 +17,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   for (const scenes::SceneInfo& s : scenes::scene_catalog()) names.push_back(s.name);
   CLI::App* cmd = app.add_subcommand(
       "compare",
-      "Run every scene under every backend; print the table and write a report (Markdown, CSV, "
-      "SVG charts with gnuplot, scene snapshots)");
+      "Run every scene under every backend, and the skip section (pyramid, rain, tumbler, mixed "
+      "with every skip off and on); print the tables and write a report (Markdown, CSV, SVG "
+      "charts with gnuplot, scene snapshots)");
   cmd->add_flag("--quick", options->quick, "Short runs (5 s of simulated time per Box2D scene)");
   cmd->add_option("--out", options->out_dir, "Report directory")->capture_default_str();
   CLI::Option* steps_option =
@@ -27,8 +28,17 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--seed", options->seed, "Seed of every scene")->capture_default_str();
   cmd->add_option("--scene", options->scenes, "Only these scenes (repeatable)")
       ->check(CLI::IsMember(names));
-  cmd->callback([options, steps, steps_option, &exit_code] {
+  auto skip = std::make_shared<std::string>("all");
+  const std::string skip_help =
+      scenes::skip_help() +
+      "\n(every run of the main table; the skip section sets it against none)";
+  cmd->add_option("--skip", *skip, skip_help)
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
+                             "all|none|LIST"));
+  cmd->callback([options, steps, steps_option, skip, &exit_code] {
     if (steps_option->count() > 0) options->steps = *steps;
+    options->skips = scenes::parse_skips(*skip).config;
     exit_code = scenes::run_compare_command(*options, std::cout, std::cerr);
   });
 }

@@ -31,6 +31,10 @@ void add_scene_command(CLI::App& app, int& exit_code) {
       cmd->add_option("--steps", *steps, "Steps to run (default: the scene's own)")
           ->check(CLI::Range(1, 10000000));
   cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str();
+  cmd->add_option("--skip", args->skip, scenes::skip_help())
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
+                             "all|none|LIST"));
   cmd->add_option("--json", args->json, "Write the figures as one JSON object to FILE, or '-'");
   cmd->add_option("--svg", args->svg, "Draw the final state as SVG to FILE, or '-'");
   cmd->callback([args, steps, steps_option, &exit_code] {

@@ -79,17 +79,17 @@ std::optional<box2d::Backend> parse_backend(std::string_view name) {
   return std::nullopt;
 }
 
-std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend,
-                                  std::uint64_t seed) {
+std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend, std::uint64_t seed,
+                                  const box2d::Config& skips) {
   const Entry* e = find_entry(name);
   if (e == nullptr) throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
   if (e->build == nullptr) return paper::make_scene(backend, seed);
-  return std::make_unique<WorldScene>(e->info.name, backend, seed, e->build);
+  return std::make_unique<WorldScene>(e->info.name, backend, seed, skips, e->build);
 }
 
 SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
-                       Drawing* final_state) {
-  const std::unique_ptr<Scene> scene = make_scene(name, backend, seed);
+                       const box2d::Config& skips, Drawing* final_state) {
+  const std::unique_ptr<Scene> scene = make_scene(name, backend, seed, skips);
   for (int i = 0; i < steps; ++i) scene->step();
   if (final_state != nullptr) *final_state = scene->drawing();
   return scene->metrics();

@@ -1,5 +1,6 @@
 #include "scenes/compare.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -19,7 +20,69 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+template <std::size_t N>
+bool listed(const std::array<const char*, N>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The configurations one after the other, repetition after repetition: the machines are shared,
+// so what is compared is measured as close together in time as possible.
+SkipMeasurement measure_skips(const SceneInfo& s, box2d::Backend b, int steps,
+                              const CompareOptions& options) {
+  std::vector<box2d::Config> configs = {box2d::Config::none(), options.skips};
+  if (is_skip_target(s.name, box2d::name(b))) {
+    for (const SkipSwitch& sw : skip_switches()) {
+      if (sw.field == &box2d::Config::lin_canny_cache) continue;
+      box2d::Config alone = box2d::Config::none();
+      alone.*(sw.field) = true;
+      configs.push_back(alone);
+    }
+  }
+  std::vector<std::optional<SceneMetrics>> fastest(configs.size());
+  for (int r = 0; r < skip_repetitions(options.quick); ++r) {
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+      SceneMetrics run = run_scene(s.name, b, steps, options.seed, configs[i]);
+      if (!fastest[i] || run.narrowphase_ms_total < fastest[i]->narrowphase_ms_total) {
+        fastest[i] = std::move(run);
+      }
+    }
+  }
+  SkipMeasurement m{*fastest[0], *fastest[1], {}};
+  for (std::size_t i = 2; i < fastest.size(); ++i) m.alone.push_back(*fastest[i]);
+  return m;
+}
+
+// Only the exact backends promise equal hashes: a difference there is flagged.
+std::string hashes_equal(const SceneMetrics& on, const SceneMetrics& off) {
+  if (on.hash == off.hash) return "yes";
+  return skips_keep_the_answer(on.backend) ? "NO" : "no";
+}
+
+// "n (p %)" skipped of the evaluations.
+std::string skipped_share(std::uint64_t n, std::uint64_t of) {
+  return std::to_string(n) + (of > 0 ? " (" + fmt("%.0f", 100.0 * n / of) + " %)" : "");
+}
+
+std::uint64_t skipped(const SceneMetrics& m, box2d::Skip why) {
+  return m.skips ? (*m.skips)[static_cast<int>(why)] : 0;
+}
+
 }  // namespace
+
+int skip_repetitions(bool quick) { return quick ? 1 : 3; }
+
+bool is_skip_target(const std::string& scene, const std::string& backend) {
+  return backend == box2d::name(skip_target_backend) && listed(skip_target_scenes, scene);
+}
+
+bool skips_keep_the_answer(const std::string& backend) {
+  return backend != box2d::name(box2d::Backend::LinCanny) &&
+         backend != box2d::name(box2d::Backend::DyopFast);
+}
+
+double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off) {
+  return on.narrowphase_ns_per_pair / off.narrowphase_ns_per_pair;
+}
 
 int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
@@ -49,13 +112,37 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
       const auto t = Clock::now();
       Drawing final_state;
       const bool snapshot = b == box2d::Backend::Dyop;
-      run.rows.push_back(
-          run_scene(s->name, b, steps, options.seed, snapshot ? &final_state : nullptr));
+      run.rows.push_back(run_scene(s->name, b, steps, options.seed, options.skips,
+                                   snapshot ? &final_state : nullptr));
       if (snapshot) run.snapshots.emplace_back(s->name, std::move(final_state));
       ++done;
       progress << '[' << done << '/' << total << "] " << s->name << " / " << box2d::name(b) << ", "
                << steps << " steps: " << fmt("%.2f", seconds_since(t)) << " s (total "
                << fmt("%.1f", seconds_since(start)) << " s)\n"
+               << std::flush;
+    }
+  }
+
+  const int reps = skip_repetitions(options.quick);
+  std::vector<const SceneInfo*> skip_runs;
+  for (const SceneInfo* s : scenes) {
+    if (listed(skip_scenes, s->name)) skip_runs.push_back(s);
+  }
+  const int skip_total = static_cast<int>(skip_runs.size() * skip_backends.size());
+  int skip_done = 0;
+  for (const SceneInfo* s : skip_runs) {
+    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
+    for (box2d::Backend b : skip_backends) {
+      const auto t = Clock::now();
+      run.skips.push_back(measure_skips(*s, b, steps, options));
+      ++skip_done;
+      progress << "[skips " << skip_done << '/' << skip_total << "] " << s->name << " / "
+               << box2d::name(b) << ", " << steps << " steps, none then "
+               << skip_argument(options.skips)
+               << (run.skips.back().alone.empty() ? "" : " then each skip alone")
+               << (reps > 1 ? ", " + std::to_string(reps) + " times" : "") << ": "
+               << fmt("%.2f", seconds_since(t)) << " s (total " << fmt("%.1f", seconds_since(start))
+               << " s)\n"
                << std::flush;
     }
   }
@@ -91,6 +178,75 @@ void write_compare_table(const CompareRun& run, std::ostream& out) {
         << metres(m.pd_error_mean) << " | " << m.misclassified << " | " << top << " | "
         << fmt("%.3g", m.kinetic_energy_final) << " | " << (m.nan_detected ? "YES" : "no") << " | "
         << (m.fallbacks ? std::to_string(*m.fallbacks) : "–") << " |\n";
+  }
+}
+
+void write_skip_tables(const CompareRun& run, std::ostream& out) {
+  const std::string on = skip_argument(run.options.skips);
+  out << "Skips `" << on << "` against `none`, run back to back (narrow phase: ns per contact "
+      << "update; step: median wall time):\n\n"
+      << "| scene | backend | steps | ns/pair on | ns/pair off | on/off | step ms on | step ms off "
+         "| on/off | hashes equal | evaluations | skipped bounds | skipped warm-axis "
+         "| skipped unmoved |\n"
+      << "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|--:|\n";
+  for (const SkipMeasurement& m : run.skips) {
+    const std::uint64_t of = m.on.plugin_evaluations.value_or(0);
+    out << "| " << m.on.scene << " | " << m.on.backend << " | " << m.on.steps << " | "
+        << fmt("%.1f", m.on.narrowphase_ns_per_pair) << " | "
+        << fmt("%.1f", m.off.narrowphase_ns_per_pair) << " | "
+        << fmt("%.2f", narrowphase_ratio(m.on, m.off)) << " | " << fmt("%.3g", m.on.step_ms_median)
+        << " | " << fmt("%.3g", m.off.step_ms_median) << " | "
+        << fmt("%.2f", m.on.step_ms_median / m.off.step_ms_median) << " | "
+        << hashes_equal(m.on, m.off) << " | " << of << " | "
+        << skipped_share(skipped(m.on, box2d::Skip::Bounds), of) << " | "
+        << skipped_share(skipped(m.on, box2d::Skip::WarmAxis), of) << " | "
+        << skipped_share(skipped(m.on, box2d::Skip::Unmoved), of) << " |\n";
+  }
+
+  bool breakdown = false;
+  for (const SkipMeasurement& m : run.skips) breakdown = breakdown || !m.alone.empty();
+  if (breakdown) {
+    out << "\nEach skip alone against `none` (`" << box2d::name(skip_target_backend)
+        << "`; `lin-canny-cache` changes nothing but `lin-canny`):\n\n"
+        << "| scene | skips | ns/pair | × none | step ms | × none | hashes equal | skipped bounds "
+           "| skipped warm-axis | skipped unmoved |\n"
+        << "|---|---|--:|--:|--:|--:|---|--:|--:|--:|\n";
+    for (const SkipMeasurement& m : run.skips) {
+      if (m.alone.empty()) continue;
+      std::vector<const SceneMetrics*> rows = {&m.off};
+      for (const SceneMetrics& a : m.alone) rows.push_back(&a);
+      rows.push_back(&m.on);
+      for (const SceneMetrics* r : rows) {
+        out << "| " << r->scene << " | " << (r->skip_config ? skip_argument(*r->skip_config) : "")
+            << " | " << fmt("%.1f", r->narrowphase_ns_per_pair) << " | "
+            << fmt("%.2f", narrowphase_ratio(*r, m.off)) << " | " << fmt("%.3g", r->step_ms_median)
+            << " | " << fmt("%.2f", r->step_ms_median / m.off.step_ms_median) << " | "
+            << hashes_equal(*r, m.off) << " | " << skipped(*r, box2d::Skip::Bounds) << " | "
+            << skipped(*r, box2d::Skip::WarmAxis) << " | " << skipped(*r, box2d::Skip::Unmoved)
+            << " |\n";
+      }
+    }
+  }
+
+  bool lin_canny = false;
+  for (const SkipMeasurement& m : run.skips) {
+    lin_canny = lin_canny || m.on.backend == box2d::name(box2d::Backend::LinCanny);
+  }
+  if (!lin_canny) return;
+  out << "\n`lin-canny` with skips `" << on << "` against `none` (its answer may change: see "
+      << "the text):\n\n"
+      << "| scene | hashes equal | contact updates on / off | max penetration m on / off "
+         "| pd error max m on / off | misclassified on / off | KE final J on / off |\n"
+      << "|---|---|--:|--:|--:|--:|--:|\n";
+  for (const SkipMeasurement& m : run.skips) {
+    if (m.on.backend != box2d::name(box2d::Backend::LinCanny)) continue;
+    out << "| " << m.on.scene << " | " << (m.on.hash == m.off.hash ? "yes" : "no") << " | "
+        << m.on.contact_updates << " / " << m.off.contact_updates << " | "
+        << metres(m.on.max_penetration) << " / " << metres(m.off.max_penetration) << " | "
+        << metres(m.on.pd_error_max) << " / " << metres(m.off.pd_error_max) << " | "
+        << m.on.misclassified << " / " << m.off.misclassified << " | "
+        << fmt("%.3g", m.on.kinetic_energy_final) << " / "
+        << fmt("%.3g", m.off.kinetic_energy_final) << " |\n";
   }
 }
 
@@ -163,6 +319,10 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     return 2;
   }
   write_compare_table(run, out);
+  if (!run.skips.empty()) {
+    out << "\nSkipping what a scene doesn't need:\n\n";
+    write_skip_tables(run, out);
+  }
   if (run.paper) {
     out << "\nThe paper's experiment (scene `paper`):\n\n";
     write_paper_tables(*run.paper, out);

@@ -1,10 +1,12 @@
 #pragma once
 /// \file
-/// `dyop compare [--quick] [--out DIR]`: every scene under every backend, one table with the
-/// scene figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run,
-/// the paper's Figure-7 experiment, and a report directory: `report.md`, the CSVs behind it,
-/// gnuplot charts (time per method, time against error, Figure 7) and a snapshot of each scene.
+/// `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`: every scene under every backend,
+/// one table with the scene figures and each backend's narrow-phase time as a ratio to `box2d`'s
+/// in the same run, the paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every
+/// skip off and on), and a report directory: `report.md`, the CSVs behind it, gnuplot charts
+/// (time per method, time against error, Figure 7) and a snapshot of each scene.
 
+#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -24,6 +26,9 @@ struct CompareOptions {
   std::optional<int> steps;                 ///< every scene's step count (overrides the catalogue)
   std::uint64_t seed = 0;                   ///< every scene's seed
   std::vector<std::string> scenes;          ///< a subset, in catalogue order; empty: all
+  /// What the Box2D scenes may skip (`--skip`): the main table's runs, and the "on" side of the
+  /// skip section.
+  box2d::Config skips;
 };
 
 /// Timed repetitions of the Figure-7 experiment (each figure is their median).
@@ -33,10 +38,50 @@ int paper_repetitions(bool quick);
 /// settling moves a top body by a few centimetres, a toppled one moves metres.
 inline constexpr double standing_displacement = 0.1;
 
+/// The skip section's scenes (catalogue order), each run under every `skip_backends` with every
+/// skip off and with `CompareOptions::skips`, back to back, same seed and steps.
+inline constexpr std::array<const char*, 4> skip_scenes = {"pyramid", "rain", "tumbler", "mixed"};
+inline constexpr std::array<box2d::Backend, 3> skip_backends = {
+    box2d::Backend::Dyop, box2d::Backend::Sat, box2d::Backend::LinCanny};
+/// The target: in these scenes with this backend, narrow-phase time with every skip on
+/// at most `skip_target_ratio` × the time with every skip off. There each switch is also measured
+/// alone against none.
+inline constexpr std::array<const char*, 2> skip_target_scenes = {"rain", "tumbler"};
+inline constexpr box2d::Backend skip_target_backend = box2d::Backend::Dyop;
+inline constexpr double skip_target_ratio = 0.6;
+
+/// Repetitions of each run of the skip section: 1 quick, 3 full. Each figure is that of the
+/// repetition with the least narrow-phase time (other work on a shared machine only adds time).
+int skip_repetitions(bool quick);
+
+/// One scene and backend run with every skip off, then with skips on, then (target) each skip
+/// alone; the repetitions interleaved so that what is compared is measured close in time.
+struct SkipMeasurement {
+  SceneMetrics off;  ///< `box2d::Config::none()`
+  SceneMetrics on;   ///< `CompareOptions::skips`
+  /// `skip_target_scenes` with `skip_target_backend`: each switch alone, in `skip_switches` order,
+  /// except `lin-canny-cache` (it changes nothing but `lin-canny`); empty otherwise.
+  std::vector<SceneMetrics> alone;
+};
+
+/// True for a scene and backend of the target.
+bool is_skip_target(const std::string& scene, const std::string& backend);
+
+/// `on`'s narrow-phase time per contact update over `off`'s. When the two worlds evolve
+/// identically (equal hashes) they have the same contact updates, so this is also the ratio of
+/// their total narrow-phase times.
+double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off);
+
+/// True for the backends whose answer no skip changes (bit-identical worlds): every one but
+/// `lin-canny` (warm-started) and `dyop-fast` (approximate), as `box2d::Config` says.
+bool skips_keep_the_answer(const std::string& backend);
+
 /// What a comparative run produced.
 struct CompareRun {
   CompareOptions options;
   std::vector<SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
+  /// `skip_scenes` (those selected) by `skip_backends`, in that order.
+  std::vector<SkipMeasurement> skips;
   std::optional<paper::Experiment> paper;                  ///< when the paper scene was run
   std::vector<std::pair<std::string, Drawing>> snapshots;  ///< per scene: `dyop`'s final state
   double seconds = 0;                                      ///< wall time of the whole run
@@ -51,6 +96,10 @@ std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& 
 
 /// The main table (Markdown).
 void write_compare_table(const CompareRun& run, std::ostream& out);
+
+/// The skip section's tables (Markdown): skips on against off per scene and backend, each switch
+/// alone in the breakdown scenes, and what skipping changes in `lin-canny`'s answers.
+void write_skip_tables(const CompareRun& run, std::ostream& out);
 
 /// The Figure-7 table and the per-method summary of the paper experiment (Markdown).
 void write_paper_tables(const paper::Experiment& e, std::ostream& out);

@@ -7,10 +7,12 @@
 /// density of 1 kg/m². Depths are penetration depths of the triangles themselves (their cores,
 /// not Box2D's 1 cm skins), ≥ 0.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "dyop/box2d.hpp"
 #include "dyop/result.hpp"
 
 namespace dyop::scenes {
@@ -36,6 +38,13 @@ struct SceneMetrics {
   /// Box2D scenes: pairs the backend could not answer, answered by Box2D instead (`stats()`);
   /// 0 means every triangle pair was the backend's. None for `paper`.
   std::optional<std::uint64_t> fallbacks;
+  /// Box2D scenes: the narrow-phase work the world was allowed to skip (`--skip`). None for
+  /// `paper`, which has no Box2D world.
+  std::optional<box2d::Config> skip_config;
+  /// Box2D scenes: triangle-pair evaluations answered without running the backend, per reason
+  /// (index: `static_cast<int>(box2d::Skip)`), over the whole run like `plugin_evaluations`, of
+  /// which they are a part (`stats().skipped`). None for `paper`.
+  std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
   double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
   /// Narrow-phase time over the measured steps (ms): Box2D scenes, the sum of
   /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "scenes/skips.hpp"
+
 namespace dyop::scenes {
 namespace {
 
@@ -25,6 +27,21 @@ Json optional(const std::optional<T>& v) {
   }
 }
 
+Json skip_config(const std::optional<box2d::Config>& config) {
+  if (!config) return Json(nullptr);
+  Json names = Json::array();
+  for (const std::string& n : skip_names(*config)) names.push_back(n);
+  return names;
+}
+
+Json skips(const std::optional<std::array<std::uint64_t, box2d::skip_count>>& counts) {
+  if (!counts) return Json(nullptr);
+  Json j;
+  for (int s = 0; s < box2d::skip_count; ++s)
+    j[box2d::name(static_cast<box2d::Skip>(s))] = (*counts)[s];
+  return j;
+}
+
 Json to_json(const SceneMetrics& m) {
   Json j;
   j["scene"] = m.scene;
@@ -37,6 +54,8 @@ Json to_json(const SceneMetrics& m) {
   j["contact_updates"] = m.contact_updates;
   j["plugin_evaluations"] = optional(m.plugin_evaluations);
   j["fallbacks"] = optional(m.fallbacks);
+  j["skip_config"] = skip_config(m.skip_config);
+  j["skips"] = skips(m.skips);
   j["step_ms_median"] = number(m.step_ms_median);
   j["narrowphase_ms_total"] = number(m.narrowphase_ms_total);
   j["narrowphase_ns_per_pair"] = number(m.narrowphase_ns_per_pair);
@@ -53,46 +72,89 @@ Json to_json(const SceneMetrics& m) {
   return j;
 }
 
+// A record with every optional figure present: its JSON has every key and sub-key.
+const Json& full_record() {
+  static const Json j = [] {
+    SceneMetrics m;
+    m.skip_config.emplace();
+    m.skips.emplace();
+    return to_json(m);
+  }();
+  return j;
+}
+
+// One CSV cell: empty for null, strings bare, an array's strings separated by spaces.
+std::string csv_cell(const Json& value) {
+  if (value.is_null()) return "";
+  if (value.is_string()) return value.get<std::string>();  // names and hex digits: no commas
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  if (value.is_array()) {
+    std::string out;
+    for (const Json& v : value) out += (out.empty() ? "" : " ") + csv_cell(v);
+    return out;
+  }
+  if (value.is_number_float()) {
+    std::ostringstream number;
+    number.precision(9);
+    number << value.get<double>();
+    return number.str();
+  }
+  return value.dump();
+}
+
 }  // namespace
 
 const std::vector<std::string>& metrics_keys() {
   static const std::vector<std::string> keys = [] {
-    const Json j = to_json(SceneMetrics{});  // named: items() refers to it
     std::vector<std::string> out;
-    for (const auto& item : j.items()) out.push_back(item.key());
+    for (const auto& item : full_record().items()) out.push_back(item.key());
     return out;
   }();
   return keys;
+}
+
+const std::vector<std::string>& csv_columns() {
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> out;
+    for (const auto& item : full_record().items()) {
+      if (!item.value().is_object()) {
+        out.push_back(item.key());
+        continue;
+      }
+      for (const auto& sub : item.value().items()) out.push_back(item.key() + "." + sub.key());
+    }
+    return out;
+  }();
+  return columns;
 }
 
 void write_json(const SceneMetrics& m, std::ostream& out) { out << to_json(m).dump(2) << '\n'; }
 
 std::string csv_header() {
   std::string h;
-  for (const std::string& key : metrics_keys()) h += (h.empty() ? "" : ",") + key;
+  for (const std::string& column : csv_columns()) h += (h.empty() ? "" : ",") + column;
   return h;
 }
 
 std::string csv_row(const SceneMetrics& m) {
   const Json j = to_json(m);
-  std::ostringstream row;
-  row.precision(9);
+  std::string row;
   bool first = true;
-  for (const auto& [key, value] : j.items()) {
-    if (!first) row << ',';
+  auto cell = [&](const Json& value) {
+    row += (first ? "" : ",") + csv_cell(value);
     first = false;
-    if (value.is_null()) continue;
-    if (value.is_string()) {
-      row << value.get<std::string>();  // names and hex digits: no commas or quotes
-    } else if (value.is_boolean()) {
-      row << (value.get<bool>() ? "true" : "false");
-    } else if (value.is_number_float()) {
-      row << value.get<double>();
-    } else {
-      row << value.dump();
+  };
+  for (const auto& item : full_record().items()) {
+    const Json& value = j.at(item.key());
+    if (!item.value().is_object()) {
+      cell(value);
+      continue;
+    }
+    for (const auto& sub : item.value().items()) {
+      cell(value.is_null() ? Json(nullptr) : value.at(sub.key()));
     }
   }
-  return row.str();
+  return row;
 }
 
 std::string hash_hex(std::uint64_t hash) {

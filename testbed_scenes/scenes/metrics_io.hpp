@@ -4,6 +4,12 @@
 /// Non-finite numbers are written as JSON `null` (CSV: empty), and such a record has
 /// `nan_detected` true. The hash is written as 16 hexadecimal digits in a string: JSON numbers
 /// lose integers above 2⁵³.
+///
+/// Box2D scenes add `skip_config`, the names of the skips the world ran with (an array, empty for
+/// `--skip none`), and `skips`, an object counting the evaluations skipped per reason
+/// (`{"bounds": n, "warm-axis": n, "unmoved": n}`); both are `null` for `paper`. In CSV an object
+/// becomes one column per key (`skips.bounds`, ...) and an array one cell, its names separated by
+/// spaces.
 
 #include <iosfwd>
 #include <string>
@@ -13,13 +19,17 @@
 
 namespace dyop::scenes {
 
-/// The JSON object's keys, in the order written (also the CSV columns).
+/// The JSON object's keys, in the order written.
 const std::vector<std::string>& metrics_keys();
+
+/// The CSV columns: `metrics_keys`, with an object's key replaced by `key.sub` for each of its
+/// keys.
+const std::vector<std::string>& csv_columns();
 
 /// One JSON object, indented, with a final newline.
 void write_json(const SceneMetrics& m, std::ostream& out);
 
-/// The CSV header: `metrics_keys` joined by commas.
+/// The CSV header: `csv_columns` joined by commas.
 std::string csv_header();
 
 /// One CSV line (no newline) in `csv_header` order; numbers with 9 significant digits.

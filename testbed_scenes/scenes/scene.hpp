@@ -7,6 +7,10 @@
 /// bodies exist and uninstall it when destroyed: Box2D's contact registry is process-wide, so
 /// only one such scene may exist at a time. `box2d` is Box2D's own `b2CollidePolygons` routed
 /// through the same plug-in (bit-identical to Box2D's own polygon contact, and counted alike).
+///
+/// Box2D scenes run with a `box2d::Config`, the narrow-phase work they may skip (`--skip`, every
+/// skip on by default); with an exact backend it changes the time, never the final state. The
+/// `paper` scene has no Box2D world: it accepts a config and ignores it.
 
 #include <cstdint>
 #include <memory>
@@ -16,6 +20,7 @@
 
 #include "dyop/box2d.hpp"
 #include "scenes/metrics.hpp"
+#include "scenes/skips.hpp"
 #include "scenes/svg.hpp"
 
 namespace dyop::scenes {
@@ -49,14 +54,16 @@ const SceneInfo* find_scene(std::string_view name);
 /// The backend spelt `name` ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or nothing.
 std::optional<box2d::Backend> parse_backend(std::string_view name);
 
-/// Creates scene `name` for `backend` and `seed`. Throws `std::invalid_argument` for an unknown
-/// name and `std::runtime_error` when the plug-in refuses the backend (another scene alive).
-std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend,
-                                  std::uint64_t seed);
+/// Creates scene `name` for `backend` and `seed`, with the skips `skips` (Box2D scenes). Throws
+/// `std::invalid_argument` for an unknown name and `std::runtime_error` when the plug-in refuses
+/// the backend (another scene alive).
+std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend, std::uint64_t seed,
+                                  const box2d::Config& skips = box2d::Config::all());
 
 /// Creates, runs `steps` steps, and returns the figures (and the final state when `final_state`
 /// is given).
 SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
+                       const box2d::Config& skips = box2d::Config::all(),
                        Drawing* final_state = nullptr);
 
 }  // namespace dyop::scenes

@@ -24,6 +24,16 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
   if (m.top_displacement) out << ", top displacement " << *m.top_displacement << " m";
   if (m.fallbacks) out << ", fallbacks to Box2D " << *m.fallbacks;
   out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << hash_hex(m.hash) << '\n';
+  if (m.skip_config && m.skips) {
+    out << "  skips " << skip_argument(*m.skip_config) << ": of "
+        << m.plugin_evaluations.value_or(0) << " evaluations, skipped";
+    for (int s = 0; s < box2d::skip_count; ++s) {
+      out << (s ? ", " : " ") << box2d::name(static_cast<box2d::Skip>(s)) << ' ' << (*m.skips)[s];
+    }
+    out << '\n';
+  } else {
+    out << "  skips: none apply (no Box2D world)\n";
+  }
   out.precision(precision);
   out.flags(flags);
 }
@@ -34,6 +44,11 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   if (info == nullptr || !backend) {
     err << "dyop scene: unknown "
         << (info == nullptr ? "scene '" + c.scene + "'" : "backend '" + c.backend + "'") << '\n';
+    return 1;
+  }
+  const ParsedSkips skips = parse_skips(c.skip);
+  if (!skips.ok()) {
+    err << "dyop scene: --skip: " << skips.error << '\n';
     return 1;
   }
   if (c.json == "-" && c.svg == "-") {
@@ -58,7 +73,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   SceneMetrics m;
   Drawing final_state;
   try {
-    m = run_scene(c.scene, *backend, c.steps.value_or(info->default_steps), c.seed,
+    m = run_scene(c.scene, *backend, c.steps.value_or(info->default_steps), c.seed, skips.config,
                   c.svg.empty() ? nullptr : &final_state);
   } catch (const std::exception& e) {
     err << "dyop scene: " << c.scene << " / " << c.backend << " could not run: " << e.what()

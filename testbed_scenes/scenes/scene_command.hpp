@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// `dyop scene NAME --backend B [--steps N] [--seed S] [--json FILE|-] [--svg FILE|-]`: runs one
-/// scene under one backend, prints a short summary, and writes the figures as JSON and the final
-/// state as SVG. The command line (CLI11) validates names; this checks files and runs.
+/// `dyop scene NAME --backend B [--steps N] [--seed S] [--skip all|none|LIST] [--json FILE|-]
+/// [--svg FILE|-]`: runs one scene under one backend with the given narrow-phase skips, prints a
+/// short summary, and writes the figures as JSON and the final state as SVG. The command line
+/// (CLI11) validates names; this checks them again, checks files and runs.
 
 #include <cstdint>
 #include <iosfwd>
@@ -18,14 +19,15 @@ struct SceneCommand {
   std::string backend;       ///< "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"
   std::optional<int> steps;  ///< none: the scene's default
   std::uint64_t seed = 0;
-  std::string json;  ///< empty: none; "-": `out`
-  std::string svg;   ///< empty: none; "-": `out`
+  std::string skip = "all";  ///< a `parse_skips` argument; the `paper` scene ignores it
+  std::string json;          ///< empty: none; "-": `out`
+  std::string svg;           ///< empty: none; "-": `out`
 };
 
 /// Runs the command. Output files are opened before the scene runs, so an unwritable path fails
 /// at once. The summary goes to `out`, or to `err` when the JSON or SVG goes to `out`. Returns
-/// 0, 1 (usage: unknown name, both outputs on standard output) or 2 (a file cannot be written, or
-/// the scene could not run), with the reason on `err`.
+/// 0, 1 (usage: unknown name or skip, both outputs on standard output) or 2 (a file cannot be
+/// written, or the scene could not run), with the reason on `err`.
 int run_scene_command(const SceneCommand& command, std::ostream& out, std::ostream& err);
 
 /// A few readable lines about one run (what `dyop scene` prints).

@@ -31,8 +31,8 @@ Vec2<double> world_point(const b2Transform& xf, const b2Vec2& v) {
 
 }  // namespace
 
-WorldScene::Installation::Installation(box2d::Backend backend) {
-  const box2d::InstallResult r = box2d::install(backend);
+WorldScene::Installation::Installation(box2d::Backend backend, const box2d::Config& skips) {
+  const box2d::InstallResult r = box2d::install(backend, skips);
   if (!r.ok()) throw std::runtime_error(std::string("cannot install the backend: ") + r.message);
   box2d::reset_stats();
 }
@@ -40,11 +40,12 @@ WorldScene::Installation::Installation(box2d::Backend backend) {
 WorldScene::Installation::~Installation() { box2d::uninstall(); }
 
 WorldScene::WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
-                       WorldBuilder build)
+                       const box2d::Config& skips, WorldBuilder build)
     : name_(std::move(name)),
       backend_(backend),
       seed_(seed),
-      installation_(backend),
+      skips_(skips),
+      installation_(backend, skips),
       world_(std::make_unique<World>()) {
   Rng rng(seed);
   build_ = build(*world_, rng);
@@ -113,6 +114,8 @@ SceneMetrics WorldScene::metrics() const {
   const box2d::Stats s = box2d::stats();
   m.plugin_evaluations = s.triangles(backend_);
   m.fallbacks = s.fallbacks;
+  m.skip_config = skips_;
+  m.skips = s.skipped;
   m.step_ms_median = median(step_ms_);
   m.narrowphase_ms_total = collide_ms_;
   m.narrowphase_ns_per_pair =

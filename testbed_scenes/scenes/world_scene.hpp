@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// The Box2D scenes' common machinery: install the backend, build the world, step it, measure.
+/// The Box2D scenes' common machinery: install the backend with its skips, build the world, step
+/// it, measure.
 ///
 /// Per step, untimed: `ContactProbe::before_step` (counts and depth errors of the contacts the
 /// step will update); timed: `World::step` (steady_clock around `b2World::Step`) and, inside it,
@@ -38,8 +39,10 @@ using WorldBuilder = WorldBuild (*)(World& world, Rng& rng);
 /// A Box2D scene.
 class WorldScene : public Scene {
  public:
-  /// Installs `backend` in the plug-in (throws `std::runtime_error` if refused), then builds.
-  WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed, WorldBuilder build);
+  /// Installs `backend` with the skips `skips` in the plug-in (throws `std::runtime_error` if
+  /// refused), then builds.
+  WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
+             const box2d::Config& skips, WorldBuilder build);
   ~WorldScene() override;
 
   void step() override;
@@ -53,7 +56,7 @@ class WorldScene : public Scene {
   // Uninstalls the backend when the scene goes, also when building it threw: declared before the
   // world so that it outlives it (the world's contacts must be gone before uninstalling).
   struct Installation {
-    explicit Installation(box2d::Backend backend);
+    Installation(box2d::Backend backend, const box2d::Config& skips);
     ~Installation();
     Installation(const Installation&) = delete;
     Installation& operator=(const Installation&) = delete;
@@ -62,6 +65,7 @@ class WorldScene : public Scene {
   std::string name_;
   box2d::Backend backend_;
   std::uint64_t seed_;
+  box2d::Config skips_;
   Installation installation_;
   std::unique_ptr<World> world_;
   WorldBuild build_;

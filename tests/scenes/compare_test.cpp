@@ -44,6 +44,21 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   EXPECT_NE(report.find("## The paper's experiment"), std::string::npos);
   const std::string csv = read(dir / "compare.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), runs + 1);
+
+  // The skip section: every skip scene under every skip backend, none then all, and each skip
+  // alone (lin-canny-cache left out) in the breakdown scenes.
+  const int skip_runs = static_cast<int>(skip_scenes.size() * skip_backends.size());
+  EXPECT_NE(
+      err.str().find("[skips " + std::to_string(skip_runs) + "/" + std::to_string(skip_runs) + "]"),
+      std::string::npos);
+  EXPECT_NE(report.find("## Skipping what a scene doesn't need"), std::string::npos);
+  EXPECT_NE(report.find("**Target**"), std::string::npos);
+  EXPECT_NE(out.str().find("| rain | dyop | 3 |"), std::string::npos) << "skips on against off";
+  const std::string skips = read(dir / "skips.csv");
+  const int rows =
+      skip_runs + static_cast<int>(skip_target_scenes.size()) * (skip_switch_count - 1);
+  EXPECT_EQ(std::count(skips.begin(), skips.end(), '\n'), rows + 1);
+  EXPECT_NE(skips.find("rain,dyop,3,\"warm-axis\","), std::string::npos);
   EXPECT_FALSE(read(dir / "paper_figure7.csv").empty());
   EXPECT_FALSE(read(dir / "paper_methods.csv").empty());
   for (const SceneInfo& s : scene_catalog()) {

@@ -56,6 +56,25 @@ TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
   EXPECT_EQ(run("compare --scene nope").status, 1);
 }
 
+TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
+  const Outcome list = run("scene rain --backend dyop --steps 3 --skip unmoved,bounds --json -");
+  ASSERT_EQ(list.status, 0) << list.err;
+  const nlohmann::json j = nlohmann::json::parse(list.out);
+  EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "unmoved"}));
+  ASSERT_TRUE(j["skips"].is_object());
+  EXPECT_TRUE(j["skips"].contains("warm-axis"));
+  EXPECT_NE(list.err.find("skips bounds,unmoved"), std::string::npos) << list.err;
+  EXPECT_EQ(run("scene stack --backend sat --steps 2 --skip none").status, 0);
+  EXPECT_EQ(run("scene paper --backend dyop --steps 2 --skip all").status, 0)
+      << "accepted, and ignored: no Box2D world";
+  for (const std::string command : {"scene stack --backend dyop --steps 2 --skip bounds,nope",
+                                    "compare --quick --steps 1 --skip nope"}) {
+    const Outcome bad = run(command);
+    EXPECT_EQ(bad.status, 1) << command;
+    EXPECT_NE(bad.err.find("nope"), std::string::npos) << bad.err;
+  }
+}
+
 TEST(SceneCli, UnwritableOutputIsAnIoError) {
   // A regular file where a directory should be: unwritable even for root.
   const auto dir = temp_dir("unwritable");
