@@ -7,6 +7,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   dyop::cli::add_pairs_command(app, exit_code);
   dyop::cli::add_bench_command(app, exit_code);
+  dyop::cli::add_stress_command(app, exit_code);
 #ifdef DYOP_WITH_BOX2D
   dyop::cli::add_scene_command(app, exit_code);
   dyop::cli::add_compare_command(app, exit_code);

@@ -1,6 +1,7 @@
 #include "pairs_command.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <istream>
 #include <ostream>
 #include <string>
@@ -28,7 +29,8 @@ void write_table_line(std::ostream& out, const std::string& method, const std::s
   auto shorten = [](const std::string& s) {  // 9 digits are plenty for reading
     if (s.empty() || s.find_first_of("0123456789") == std::string::npos) return s;
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", std::stod(s));
+    // strtod, not stod: stod throws on a subnormal (ERANGE), which is a valid answer here.
+    std::snprintf(buffer, sizeof buffer, "%.9g", std::strtod(s.c_str(), nullptr));
     return std::string(buffer);
   };
   char line[256];

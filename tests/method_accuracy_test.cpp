@@ -9,6 +9,7 @@
 
 #include "dyop/method.hpp"
 #include "workloads/exact_reference.hpp"
+#include "workloads/stress_classes.hpp"
 
 namespace dyop::workloads {
 namespace {
@@ -26,15 +27,6 @@ struct Figures {
     sum_error += e;
   }
 };
-
-// Float inputs are the double inputs rounded to float, so the reference sees what the method sees.
-RawPair rounded_to_float(const RawPair& p) {
-  RawPair out = p;
-  for (auto* t : {&out.a, &out.b}) {
-    for (Vec2<double>& v : *t) v = v.cast<float>().cast<double>();
-  }
-  return out;
-}
 
 template <class T>
 Figures measure(Method m, PairClass c, double& worst_depth_below_exact) {

@@ -63,6 +63,18 @@ TEST(Triangle, CoordinatesWhoseSquaresWouldOverflowAreRejectedAsTooLarge) {
   EXPECT_TRUE(Triangle<float>::make(F(0, 0), F(1e18f, 0), F(0, 1e18f)).ok());
 }
 
+TEST(Triangle, TrianglesWhoseSquaredLengthsWouldUnderflowAreRejectedAsTooSmall) {
+  // Float: a 1e-23 edge squares to zero; the whole triangle is far below min_size (9.1e-13).
+  using F = Vec2<float>;
+  EXPECT_EQ(Triangle<float>::make(F(0, 0), F(1e-23f, 0), F(5e-20f, 1e-19f)).error,
+            TriangleError::TooSmall);
+  EXPECT_EQ(Triangle<double>::make(V(0, 0), V(1e-162, 0), V(5e-156, 1e-155)).error,
+            TriangleError::TooSmall);
+  EXPECT_TRUE(Triangle<float>::make(F(0, 0), F(1e-12f, 0), F(0, 1e-12f)).ok());
+  EXPECT_TRUE(Triangle<double>::make(V(0, 0), V(1e-138, 0), V(0, 1e-138)).ok());
+  EXPECT_NE(std::string(describe(TriangleError::TooSmall)).find("too small"), std::string::npos);
+}
+
 TEST(Triangle, CounterClockwiseInputIsKeptInOrder) {
   const auto t = Triangle<double>::make(V(0, 0), V(2, 0), V(0, 1));
   ASSERT_TRUE(t.ok());

@@ -67,7 +67,8 @@ struct PortableLanes {
 
 template <class T>
 BatchLimits<T> limits() {
-  return {max_coordinate<T>(), degenerate_tolerance<T>(), touching_tolerance<T>()};
+  return {max_coordinate<T>(), min_size<T>() * min_size<T>(), degenerate_tolerance<T>(),
+          touching_tolerance<T>()};
 }
 
 bool cpu_has_avx2_fma() {

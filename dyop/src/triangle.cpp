@@ -11,6 +11,8 @@ const char* describe(TriangleError e) {
     case TriangleError::NonFinite: return "non-finite coordinate (NaN or infinity)";
     case TriangleError::TooLarge:
       return "coordinate too large (beyond max_coordinate: squared lengths would overflow)";
+    case TriangleError::TooSmall:
+      return "triangle too small (longest edge below min_size: squared lengths would underflow)";
     case TriangleError::RepeatedVertex: return "repeated vertex (two vertices are equal)";
     case TriangleError::Degenerate:
       return "degenerate triangle (vertices collinear within the flatness tolerance)";
@@ -40,6 +42,10 @@ TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const
   const Vec2<T> e12 = p2 - p1;
   const Vec2<T> e20 = p0 - p2;
   const T longest_sq = std::max({e01.squaredNorm(), e12.squaredNorm(), e20.squaredNorm()});
+  if (!(longest_sq >= min_size<T>() * min_size<T>())) {
+    out.error = TriangleError::TooSmall;
+    return out;
+  }
   const T twice_area = cross(e01, Vec2<T>(p2 - p0));
   if (!(std::abs(twice_area) > degenerate_tolerance<T>() * longest_sq)) {
     out.error = TriangleError::Degenerate;

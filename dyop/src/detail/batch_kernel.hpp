@@ -52,6 +52,7 @@ struct BatchView {
 template <class T>
 struct BatchLimits {
   T max_coordinate;        // max_coordinate<T>()
+  T min_size_sq;           // min_size<T>()²
   T degenerate_tolerance;  // degenerate_tolerance<T>()
   T touching_tolerance;    // touching_tolerance<T>()
 };
@@ -320,12 +321,15 @@ struct BatchKernel {
     load(v, row, in);
     const Pair p = geometry(in);
     // Validation, bit for bit as Triangle<T>::make: every coordinate finite and within
-    // max_coordinate, then the flatness test.
+    // max_coordinate, the longest edge not below min_size, then the flatness test.
     const V q_max_a = L::max_nonneg(L::max_nonneg(p.qa[0], p.qa[1]), p.qa[2]);
     const V q_max_b = L::max_nonneg(L::max_nonneg(p.qb[0], p.qb[1]), p.qb[2]);
-    const M valid =
+    const M too_small = L::either(L::lt(q_max_a, L::splat(lim.min_size_sq)),
+                                  L::lt(q_max_b, L::splat(lim.min_size_sq)));
+    const M valid = L::but_not(
         L::both(L::within(in, 12, lim.max_coordinate),
-                L::both(well_shaped(p.area_a, q_max_a, lim), well_shaped(p.area_b, q_max_b, lim)));
+                L::both(well_shaped(p.area_a, q_max_a, lim), well_shaped(p.area_b, q_max_b, lim))),
+        too_small);
     // Rows whose squared edge lengths the lanes' reciprocal square root cannot take.
     unsigned redo = 0;
     if constexpr (L::kHasRangeLimit) {

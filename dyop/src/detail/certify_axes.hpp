@@ -17,8 +17,15 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   const int best_b = argmin3(overlap, 3);
   const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
   Result<T> r;
-  r.status = classify(overlap[least], touching_band(f));
-  if (r.status == Status::Separated) {
+  const T band = touching_band(f);
+  r.status = classify(overlap[least], band);
+  // A gap inside the band proves only that the pair does not overlap: along an edge normal it can
+  // be far less than the distance (two slivers end to end), so the distance decides.
+  const bool gap_in_band = r.status == Status::Touching && overlap[least] < 0;
+  const Closest<T> near = gap_in_band ? find(f) : Closest<T>{};
+  if (gap_in_band && near.distance > band) {
+    fill_closest(f, q.level, near, r);
+  } else if (r.status == Status::Separated) {
     fill_separated(f, q.level, r, find);
   } else if (q.level >= Level::Contact) {
     // The same arithmetic again on one axis, now keeping the deep vertex.

@@ -50,12 +50,27 @@ inline T closest_on_edge(const std::array<Vec2<T>, 3>& verts, int j, const Vec2<
   return h * h;
 }
 
+// closest_on_edge in a frame at the edge's own start, from world coordinates: the vertex's offset
+// from the edge is rounded once, relative to their distance, and the edge keeps its own shape. In
+// the pair's frame a triangle smaller than that frame's rounding (eps × its distance from A's
+// first vertex) collapses, and the edge's exact normal then measures the distance to its line,
+// not to the segment. `c` comes back in the pair's frame (`local`: the triangle's vertices there).
+template <class T>
+inline T closest_on_world_edge(const Triangle<T>& t, const std::array<Vec2<T>, 3>& local, int j,
+                               const Vec2<T>& p, Vec2<T>& c, Feature& fe) {
+  const Vec2<T>& q = t.vertex(j);
+  const std::array<Vec2<T>, 3> v = {t.vertex(0) - q, t.vertex(1) - q, t.vertex(2) - q};
+  const T d = closest_on_edge(v, j, t.normal(j), Vec2<T>(p - q), c, fe);
+  c += local[j];
+  return d;
+}
+
 // Keeps in `best` the nearer of its current pair and A's vertex `i` against B's edge `j`.
 template <class T>
 inline void consider_a_vertex(const PairFrame<T>& f, int i, int j, Closest<T>& best, T& best_sq) {
   Vec2<T> c;
   Feature fe;
-  const T d = closest_on_edge(f.b, j, f.tb.normal(j), f.a[i], c, fe);
+  const T d = closest_on_world_edge(f.tb, f.b, j, f.ta.vertex(i), c, fe);
   if (d < best_sq) {
     best_sq = d;
     best.point_a = f.a[i];
@@ -71,7 +86,7 @@ template <class T>
 inline void consider_b_vertex(const PairFrame<T>& f, int i, int j, Closest<T>& best, T& best_sq) {
   Vec2<T> c;
   Feature fe;
-  const T d = closest_on_edge(f.a, j, f.ta.normal(j), f.b[i], c, fe);
+  const T d = closest_on_world_edge(f.ta, f.a, j, f.tb.vertex(i), c, fe);
   if (d < best_sq) {
     best_sq = d;
     best.point_a = c;

@@ -1,0 +1,99 @@
+#pragma once
+// The byte format of the method fuzzers: one triangle pair in float or double.
+//
+// Byte 0: bit 0 set: float, else double; bit 1 set: grid encoding, else raw.
+// - Raw: 12 IEEE values, little-endian (8 bytes each for double, 4 for float), in the order
+//   ax,ay,bx,by,cx,cy,px,py,qx,qy,rx,ry: every bit pattern, NaN, infinities, subnormals included.
+// - Grid: 12 little-endian int16 `g`, then int8 `e`, int8 `f`, int8 `ox`, int8 `oy`: coordinate
+//   g·2^e plus the offset (ox, oy)·2^f. Exact collinearity, shared vertices and edges, touching,
+//   huge and tiny scales and far offsets are a few bytes away.
+// Missing bytes read as zero, so every input decodes. Bytes after the pair are the `rest`, for a
+// fuzzer's own use (a Lin–Canny cache).
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "workloads/pair_classes.hpp"
+
+namespace dyop::fuzz {
+
+struct FuzzInput {
+  bool is_float = false;
+  std::array<double, 12> coords{};  // as the precision holds them (floats widened exactly)
+  const std::uint8_t* rest = nullptr;
+  std::size_t rest_size = 0;
+
+  workloads::RawPair pair() const {
+    workloads::RawPair p;
+    for (int i = 0; i < 3; ++i) {
+      p.a[i] = Vec2<double>(coords[2 * i], coords[2 * i + 1]);
+      p.b[i] = Vec2<double>(coords[6 + 2 * i], coords[7 + 2 * i]);
+    }
+    return p;
+  }
+};
+
+class ByteReader {
+ public:
+  ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  void read(void* out, std::size_t n) {
+    std::memset(out, 0, n);
+    const std::size_t k = n < size_ - at_ ? n : size_ - at_;
+    if (k > 0) std::memcpy(out, data_ + at_, k);
+    at_ += k;
+  }
+  template <class V>
+  V get() {
+    V v;
+    read(&v, sizeof v);
+    return v;
+  }
+  const std::uint8_t* here() const { return data_ + at_; }
+  std::size_t left() const { return size_ - at_; }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t at_ = 0;
+};
+
+// `x` as a float program holds it: rounded, or an infinity beyond float's range (where the
+// conversion itself would be undefined). Through a volatile: GCC 12 drops a vectorised
+// double → float → double round trip.
+inline double to_float(double x) {
+  if (!(std::abs(x) <= double(std::numeric_limits<float>::max()))) {
+    return std::isnan(x) ? x : std::copysign(double(std::numeric_limits<float>::infinity()), x);
+  }
+  const volatile float rounded = static_cast<float>(x);
+  return rounded;
+}
+
+inline FuzzInput decode(const std::uint8_t* data, std::size_t size) {
+  ByteReader in(data, size);
+  FuzzInput out;
+  const auto mode = in.get<std::uint8_t>();
+  out.is_float = (mode & 1u) != 0;
+  if ((mode & 2u) == 0) {
+    for (double& c : out.coords) c = out.is_float ? double(in.get<float>()) : in.get<double>();
+  } else {
+    std::array<std::int16_t, 12> g;
+    for (std::int16_t& v : g) v = in.get<std::int16_t>();
+    const int e = in.get<std::int8_t>();
+    const int f = in.get<std::int8_t>();
+    const double ox = std::ldexp(double(in.get<std::int8_t>()), f);
+    const double oy = std::ldexp(double(in.get<std::int8_t>()), f);
+    for (int i = 0; i < 12; ++i) {
+      const double c = std::ldexp(double(g[i]), e) + (i % 2 == 0 ? ox : oy);
+      out.coords[i] = out.is_float ? to_float(c) : c;
+    }
+  }
+  out.rest = in.here();
+  out.rest_size = in.left();
+  return out;
+}
+
+}  // namespace dyop::fuzz

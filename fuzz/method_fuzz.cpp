@@ -1,0 +1,167 @@
+// libFuzzer target for one method (chosen at build time by DYOP_FUZZ_METHOD: a `dyop::Method`
+// spelling, or "batch"), on one triangle pair in float or double (format: fuzz_input.hpp).
+//
+// What it asserts, besides "no crash, no sanitizer report":
+// - `Triangle<T>::make` decides every input; a pair it accepts is answered at every level, never
+//   `Invalid` (dyop-paper: only by design, with a reason), and every field the level promises is
+//   finite;
+// - sat: within the exact bound of the exact rational reference (double 1e-12, float 1e-5 of the
+//   pair's size), with the exact status outside the touching band;
+// - dyop: agrees with sat (status, and separation within the touching band);
+// - batch: every row's verdict is `Triangle<T>::make`'s and every valid row is sat's answer, in 9
+//   copies of the row (the AVX2 kernel's 8 lanes and the portable remainder);
+// - lin-canny: also warm-started from a cache made of the remaining bytes (any bytes).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "dyop/batch.hpp"
+#include "dyop/method.hpp"
+#include "fuzz_input.hpp"
+#include "workloads/exact_reference.hpp"
+
+namespace dyop::fuzz {
+namespace {
+
+const std::string kTarget = DYOP_FUZZ_METHOD;
+
+[[noreturn]] void fail(const char* what, const FuzzInput& in) {
+  std::fprintf(stderr, "%s: %s (%s) on", kTarget.c_str(), what, in.is_float ? "float" : "double");
+  for (double c : in.coords) std::fprintf(stderr, " %.17g", c);
+  std::fprintf(stderr, "\n");
+  std::abort();
+}
+
+void require(bool ok, const char* what, const FuzzInput& in) {
+  if (!ok) fail(what, in);
+}
+
+template <class T>
+bool finite_at(const Result<T>& r, Level level) {
+  if (level == Level::Overlap) return true;
+  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite();
+  if (level >= Level::Contact) ok = ok && r.witness_a.allFinite() && r.witness_b.allFinite();
+  if (level == Level::Manifold) {
+    const Manifold<T>& m = r.manifold;
+    ok = ok && m.point_count >= 0 && m.point_count <= 2 && m.normal.allFinite();
+    for (int i = 0; i < m.point_count; ++i) {
+      ok = ok && m.points[i].point.allFinite() && std::isfinite(m.points[i].separation);
+    }
+  }
+  return ok;
+}
+
+template <class T>
+double exact_bound() {
+  return std::is_same_v<T, float> ? 1e-5 : 1e-12;
+}
+
+// Sat against the exact rational reference.
+template <class T>
+void check_exact(const Result<T>& r, const FuzzInput& in, T band) {
+  const workloads::RawPair p = in.pair();
+  const workloads::ExactAnswer exact = workloads::exact_separation(p);
+  const double size = workloads::pair_size(p);
+  require(std::abs(double(r.separation) - exact.separation) <= exact_bound<T>() * size,
+          "sat is not within the exact bound", in);
+  if (std::abs(exact.separation) > 2 * double(band)) {
+    require(r.status == (exact.separation < 0 ? Status::Penetrating : Status::Separated),
+            "sat's status is not the exact one", in);
+  }
+}
+
+template <class T>
+void check_batch(const FuzzInput& in, const TriangleOrError<T>& a, const TriangleOrError<T>& b) {
+  constexpr std::size_t rows = 9;
+  std::vector<T> c[12];
+  for (int k = 0; k < 12; ++k) c[k].assign(rows, T(in.coords[k]));
+  const PairBatch<T> batch{c[0].data(), c[1].data(), c[2].data(),  c[3].data(),
+                           c[4].data(), c[5].data(), c[6].data(),  c[7].data(),
+                           c[8].data(), c[9].data(), c[10].data(), c[11].data(), rows};
+  std::vector<Status> status(rows);
+  std::vector<T> sep(rows), nx(rows), ny(rows);
+  require(penetrate_batch(batch, Level::Depth,
+                          BatchOutput<T>{status.data(), sep.data(), nx.data(), ny.data()}) ==
+              BatchError::None,
+          "batch refused a plain call", in);
+  const BatchRowError e = batch_row_error(batch, 0);
+  require(e.a == a.error && e.b == b.error, "batch's verdict differs from Triangle::make's", in);
+  const bool valid = a.ok() && b.ok();
+  const Result<T> s = valid ? sat(a.triangle, b.triangle) : Result<T>{};
+  const T band = valid ? touching_tolerance<T>() * std::max(a.triangle.size(), b.triangle.size()) : T(0);
+  for (std::size_t k = 0; k < rows; ++k) {
+    require((status[k] == Status::Invalid) == !valid, "batch lost or kept a row wrongly", in);
+    if (!valid) continue;
+    require(std::isfinite(sep[k]) && std::isfinite(nx[k]) && std::isfinite(ny[k]),
+            "batch answered NaN or inf", in);
+    require(std::abs(sep[k] - s.separation) <= 4 * band, "batch differs from sat", in);
+    require(sep[k] == sep[0] && status[k] == status[0], "batch lanes differ", in);
+  }
+}
+
+// A Lin–Canny cache from arbitrary bytes: out-of-range fields must start cold, not index past.
+LinCannyCache cache_from(const FuzzInput& in) {
+  ByteReader bytes(in.rest, in.rest_size);
+  LinCannyCache c;
+  c.valid = (bytes.get<std::uint8_t>() & 1u) != 0;
+  c.type_a = static_cast<Feature::Type>(bytes.get<std::uint8_t>() % 4);
+  c.type_b = static_cast<Feature::Type>(bytes.get<std::uint8_t>() % 4);
+  c.index_a = bytes.get<std::uint8_t>();
+  c.index_b = bytes.get<std::uint8_t>();
+  c.depth_axis = bytes.get<std::uint8_t>();
+  return c;
+}
+
+template <class T>
+void run(const FuzzInput& in) {
+  auto at = [&](int k) { return Vec2<T>(T(in.coords[k]), T(in.coords[k + 1])); };
+  const TriangleOrError<T> a = Triangle<T>::make(at(0), at(2), at(4));
+  const TriangleOrError<T> b = Triangle<T>::make(at(6), at(8), at(10));
+  if (kTarget == "batch") {
+    check_batch(in, a, b);
+    return;
+  }
+  if (!a.ok() || !b.ok()) return;
+  const std::optional<Method> m = parse_method(kTarget);
+  require(m.has_value(), "unknown DYOP_FUZZ_METHOD", in);
+  const T size = std::max(a.triangle.size(), b.triangle.size());
+  const T band = touching_tolerance<T>() * size;
+  LinCannyCache cache = cache_from(in);
+  Status depth_status = Status::Invalid;
+  for (Level level : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
+    Query<T> q{level};
+    q.margin = T(0.01) * size;
+    q.face_hysteresis = T(0.001) * size;
+    const Result<T> r = penetrate(*m, a.triangle, b.triangle, q, &cache);
+    if (r.status == Status::Invalid) {
+      require(*m == Method::DyopPaper && r.reason != nullptr, "Invalid on a valid pair", in);
+      continue;
+    }
+    require(finite_at(r, level), "NaN or inf in a field the level promises", in);
+    if (level == Level::Depth) depth_status = r.status;
+  }
+  if (depth_status == Status::Invalid) return;
+  const Result<T> r = penetrate(*m, a.triangle, b.triangle, Query<T>{Level::Depth});
+  if (*m == Method::Sat) check_exact(r, in, band);
+  if (*m == Method::Dyop) {
+    const Result<T> s = sat(a.triangle, b.triangle);
+    require(std::abs(r.separation - s.separation) <= 2 * band, "dyop and sat disagree on separation", in);
+    if (std::abs(s.separation) > 2 * band) require(r.status == s.status, "dyop and sat disagree on status", in);
+  }
+}
+
+}  // namespace
+}  // namespace dyop::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const dyop::fuzz::FuzzInput in = dyop::fuzz::decode(data, size);
+  if (in.is_float) {
+    dyop::fuzz::run<float>(in);
+  } else {
+    dyop::fuzz::run<double>(in);
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Fuzzing: builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan on the code under test)
+# in build-fuzz/, then runs each for a bounded time on its seed corpus (fuzz/corpus/csv for the
+# CSV reader, fuzz/corpus/methods for the methods), new inputs going to build-fuzz/corpus/.
+# Any crash, sanitizer report or failed property stops it with a non-zero status and leaves the
+# reproducer in build-fuzz/artifacts/ (replay: build-fuzz/bin/<target> <file>).
+#   FUZZ_SECONDS  seconds per target (default 20)
+#   FUZZ_TARGETS  targets to run (default: all)
+# Needs clang and libFuzzer's runtime (Debian 12: clang, libclang-rt-14-dev).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${FUZZ_SECONDS:-20}"
+targets=(${FUZZ_TARGETS:-fuzz_csv fuzz_dyop fuzz_dyop_fast fuzz_dyop_paper fuzz_lin_canny fuzz_sat
+                         fuzz_epa fuzz_batch})
+
+if ! command -v clang++ >/dev/null; then
+  echo "fuzz: clang++ not found (Debian 12: apt-get install clang libclang-rt-14-dev)" >&2
+  exit 2
+fi
+if ! echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
+     clang++ -x c++ -fsanitize=fuzzer - -o /dev/null 2>/dev/null; then
+  echo "fuzz: clang++ cannot link libFuzzer (Debian 12: apt-get install libclang-rt-14-dev)" >&2
+  exit 2
+fi
+
+start=$SECONDS
+cmake -S . -B build-fuzz -DDYOP_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDYOP_BUILD_TESTS=OFF -DDYOP_BUILD_BENCH=OFF >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
+echo "fuzz: built in $((SECONDS - start)) s" >&2
+
+export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+mkdir -p build-fuzz/artifacts
+for target in "${targets[@]}"; do
+  seeds=fuzz/corpus/methods
+  [ "$target" = fuzz_csv ] && seeds=fuzz/corpus/csv
+  mkdir -p "build-fuzz/corpus/$target"
+  echo "fuzz: $target for ${seconds} s" >&2
+  if ! build-fuzz/bin/"$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+         -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$target-" \
+         "build-fuzz/corpus/$target" "$seeds" > "build-fuzz/$target.log" 2>&1; then
+    tail -n 60 "build-fuzz/$target.log" >&2
+    echo "fuzz: $target FAILED (log: build-fuzz/$target.log, reproducer in build-fuzz/artifacts/)" >&2
+    exit 1
+  fi
+  grep -E "stat::number_of_executed_units|stat::new_units_added" "build-fuzz/$target.log" |
+    tr '\n' ' ' | sed "s/^/fuzz: $target: /; s/\$/\n/" >&2
+done
+echo "fuzz: ${#targets[@]} targets ran ${seconds} s each without a failure ($((SECONDS - start)) s in all)"

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// What `dyop stress` runs on a set of pairs: every method of the library, the batch kernel and
+/// (float, with Box2D) Box2D's `b2CollidePolygons` through `dyop::box2d::collide_triangles`.
+
+#include <cstdint>
+#include <vector>
+
+#include "dyop/result.hpp"
+#include "workloads/pair_classes.hpp"
+
+namespace dyop::report {
+
+enum class StressRunner : std::uint8_t { Dyop, DyopFast, DyopPaper, LinCanny, Sat, Epa, Batch, Box2D };
+
+inline constexpr StressRunner all_stress_runners[] = {
+    StressRunner::Dyop, StressRunner::DyopFast, StressRunner::DyopPaper, StressRunner::LinCanny,
+    StressRunner::Sat,  StressRunner::Epa,      StressRunner::Batch,     StressRunner::Box2D};
+
+/// "dyop", "dyop-fast", "dyop-paper", "lin-canny", "sat", "epa", "batch", "box2d".
+const char* name(StressRunner r);
+
+/// Whether `r` runs in this precision in this build: Box2D in float only, and only when built
+/// with Box2D.
+bool runs(StressRunner r, bool is_float);
+
+/// One pair's answer at `Level::Depth`, with what the stress figures need of the rest.
+struct StressAnswer {
+  /// Invalid for a pair whose triangles failed `Triangle<T>::make` (nothing was run), and for a
+  /// method's own `Invalid`.
+  Status status = Status::Invalid;
+  double separation = 0;  ///< signed, valid unless Invalid
+  /// Every field the method promises at `Level::Depth` is finite and, for the per-pair methods,
+  /// every field of a `Level::Manifold` query of the same pair too (Box2D: the Contact fields of
+  /// `collide_triangles`; batch: its separation and normal).
+  bool finite = true;
+  /// Batch only: the row's validation verdict (`batch_row_error`) differs from
+  /// `Triangle<T>::make`'s, or a valid row was answered Invalid: a lost or wrongly kept row.
+  bool verdict_mismatch = false;
+};
+
+/// The answers of `r` on `pairs` (world coordinates as given, exactly representable in T),
+/// one per pair in order. `with_manifold` adds the `Level::Manifold` query to the finiteness
+/// check (the per-pair methods; Lin–Canny then runs warm from its Depth query's cache).
+template <class T>
+std::vector<StressAnswer> stress_answers(StressRunner r, const std::vector<workloads::RawPair>& pairs,
+                                         bool with_manifold);
+
+extern template std::vector<StressAnswer> stress_answers<float>(
+    StressRunner, const std::vector<workloads::RawPair>&, bool);
+extern template std::vector<StressAnswer> stress_answers<double>(
+    StressRunner, const std::vector<workloads::RawPair>&, bool);
+
+}  // namespace dyop::report

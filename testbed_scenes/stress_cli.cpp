@@ -1,0 +1,90 @@
+// `dyop stress`: numerical stability on hostile input, per runner, category and precision.
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "report/stress_report.hpp"
+
+namespace dyop::cli {
+namespace {
+
+struct StressArgs {
+  std::string precision = "both";
+  std::string json;
+  std::string markdown;
+  int pairs = report::StressOptions{}.pairs;
+  std::uint64_t seed = report::StressOptions{}.seed;
+  bool check = false;
+};
+
+// Writes with `write` to `path`, or to standard output for "-". False when the file failed.
+template <class Write>
+bool write_to(const std::string& path, Write&& write) {
+  if (path == "-") {
+    write(std::cout);
+    return true;
+  }
+  std::ofstream file(path);
+  write(file);
+  if (!file) std::cerr << "dyop stress: cannot write '" << path << "'\n";
+  return static_cast<bool>(file);
+}
+
+int run(const StressArgs& args) {
+  if (args.json == "-" && args.markdown == "-") {
+    std::cerr << "dyop stress: --json and --markdown cannot both write to standard output\n";
+    return exit_usage_error;
+  }
+  report::StressOptions options;
+  options.pairs = args.pairs;
+  options.seed = args.seed;
+  options.run_double = args.precision != "float";
+  options.run_float = args.precision != "double";
+  const std::vector<report::StressRecord> records = report::run_stress(options, std::cerr);
+  // Standard output carries one thing: the table, or what was asked for on "-".
+  if (args.json != "-" && args.markdown != "-") report::write_table(records, std::cout);
+  bool written = true;
+  if (!args.json.empty()) {
+    written &= write_to(args.json, [&](std::ostream& o) { report::write_json(records, o); });
+  }
+  if (!args.markdown.empty()) {
+    written &= write_to(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
+  }
+  const std::vector<std::string> broken = report::broken_promises(records);
+  for (const std::string& b : broken) std::cerr << "dyop stress: broken promise: " << b << '\n';
+  std::cerr << "dyop stress: " << records.size() << " records, "
+            << (broken.empty() ? "every promise held" : std::to_string(broken.size()) + " broken promises")
+            << '\n';
+  if (!written) return exit_io_error;
+  return args.check && !broken.empty() ? exit_check_failed : 0;
+}
+
+}  // namespace
+
+void add_stress_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<StressArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "stress",
+      "Numerical stability on hostile input: error against the exact reference, NaN/inf, "
+      "misclassifications and invariance violations per method, category and precision");
+  cmd->add_option("--precision", args->precision, "Precision(s) to measure")
+      ->check(CLI::IsMember({"double", "float", "both"}))
+      ->capture_default_str();
+  cmd->add_option("--json", args->json, "Write the records as JSON to FILE, or '-' for stdout");
+  cmd->add_option("--markdown", args->markdown,
+                  "Write the README's summary tables to FILE, or '-' for stdout");
+  cmd->add_option("--pairs", args->pairs, "Pairs per category and precision")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the pairs and transformations")
+      ->capture_default_str();
+  cmd->add_flag("--check", args->check,
+                "Exit with status 3 when a promise is broken (exactness of sat, dyop and batch; "
+                "invariance of sat, dyop, epa and batch; no NaN/inf from the library, no lost "
+                "row)");
+  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace dyop::cli
