@@ -40,15 +40,8 @@ std::string csv_line(const RawPair& p) {
 }
 
 V centre(const RawPair& p) {
-  V lo = p.a[0];
-  V hi = p.a[0];
-  for (const auto* t : {&p.a, &p.b}) {
-    for (const V& v : *t) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-  }
-  return 0.5 * (lo + hi);
+  const workloads::PairBox box = workloads::pair_box(p);
+  return 0.5 * (box.lo + box.hi);
 }
 
 // The pair under one Invariance, drawn from `rng`: moved by 1 to 100 times its size, turned by

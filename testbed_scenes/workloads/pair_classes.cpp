@@ -2,30 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
+
+#include "workloads/seeded_random.hpp"
 
 namespace dyop::workloads {
 namespace {
 
 using V = Vec2<double>;
-constexpr double kPi = 3.14159265358979323846;
 
-class Gen {
- public:
-  explicit Gen(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) { return lo + (hi - lo) * unit_(rng_); }
-  double log_uniform(double lo_exp, double hi_exp) { return std::pow(10.0, uniform(lo_exp, hi_exp)); }
-  int below(int n) { return static_cast<int>(rng_() % static_cast<std::uint64_t>(n)); }
-  bool coin() { return (rng_() & 1u) != 0; }
-  V unit_vector() {
-    const double t = uniform(0, 2 * kPi);
-    return {std::cos(t), std::sin(t)};
-  }
-
- private:
-  std::mt19937_64 rng_;
-  std::uniform_real_distribution<double> unit_{0.0, 1.0};
-};
+using Gen = SeededRandom;
 
 bool valid(const std::array<V, 3>& t) { return Triangle<double>::make(t[0], t[1], t[2]).ok(); }
 
@@ -41,12 +26,6 @@ std::array<V, 3> random_triangle(Gen& g, const V& centre, double size) {
   }
 }
 
-std::array<V, 3> shuffled(Gen& g, std::array<V, 3> t) {
-  std::rotate(t.begin(), t.begin() + g.below(3), t.end());
-  if (g.coin()) std::swap(t[1], t[2]);
-  return t;
-}
-
 RawPair general(Gen& g) {
   return {random_triangle(g, V::Zero(), 1.0),
           random_triangle(g, V(g.uniform(-1, 1), g.uniform(-1, 1)), g.uniform(0.3, 1.5))};
@@ -54,7 +33,7 @@ RawPair general(Gen& g) {
 
 // A right triangle with axis-parallel legs, corner at c, legs w (along x) and h (along y).
 std::array<V, 3> right_triangle(Gen& g, const V& c, double w, double h) {
-  return shuffled(g, {c, c + V(w, 0), c + V(0, h)});
+  return g.shuffled({c, c + V(w, 0), c + V(0, h)});
 }
 
 RawPair axis_aligned(Gen& g) {
@@ -74,7 +53,7 @@ std::array<V, 3> sliver(Gen& g, const V& centre) {
   const V p0 = centre - 0.5 * length * dir;
   const V p1 = centre + 0.5 * length * dir;
   const V p2 = centre + g.uniform(-0.4, 0.4) * length * dir + aspect * length * side;
-  return shuffled(g, {p0, p1, p2});
+  return g.shuffled({p0, p1, p2});
 }
 
 RawPair sliver_pair(Gen& g) {
@@ -102,7 +81,7 @@ RawPair near_parallel(Gen& g) {
     const V start = p + g.uniform(-0.2, 0.5) * (q - p) + g.uniform(-1e-3, 1e-3) * out;
     const double length = g.uniform(0.3, 1.2);
     const V apex = start + 0.5 * length * f + g.uniform(0.3, 1.0) * out;
-    RawPair pair{shuffled(g, a), shuffled(g, {start, start + length * f, apex})};
+    RawPair pair{g.shuffled(a), g.shuffled({start, start + length * f, apex})};
     if (valid(pair.b)) return pair;
   }
 }
@@ -120,7 +99,7 @@ RawPair containment(Gen& g) {
   const double k = g.uniform(0.1, 0.9);
   std::array<V, 3> inner;
   for (int i = 0; i < 3; ++i) inner[i] = centroid + k * (outer[i] - centroid);
-  RawPair p{outer, shuffled(g, inner)};
+  RawPair p{outer, g.shuffled(inner)};
   if (g.coin()) std::swap(p.a, p.b);
   return p;
 }
@@ -144,7 +123,7 @@ RawPair touching(Gen& g) {
   };
   for (V& v : a) v = turn(v);
   for (V& v : b) v = turn(v);
-  return {shuffled(g, a), shuffled(g, b)};
+  return {g.shuffled(a), g.shuffled(b)};
 }
 
 RawPair apart(Gen& g) {
@@ -165,7 +144,7 @@ RawPair make_one(PairClass c, Gen& g) {
     case PairClass::Containment: return containment(g);
     case PairClass::Identical: {
       const std::array<V, 3> t = random_triangle(g, V(g.uniform(-2, 2), g.uniform(-2, 2)), 1.0);
-      return {t, shuffled(g, t)};
+      return {t, g.shuffled(t)};
     }
     case PairClass::Touching: return touching(g);
     case PairClass::Apart: return apart(g);
@@ -202,16 +181,20 @@ std::vector<RawPair> make_pairs(PairClass c, int count, std::uint64_t seed) {
   return out;
 }
 
-double pair_size(const RawPair& p) {
-  V lo = p.a[0];
-  V hi = p.a[0];
+PairBox pair_box(const RawPair& p) {
+  PairBox box{p.a[0], p.a[0]};
   for (const auto* t : {&p.a, &p.b}) {
     for (const V& v : *t) {
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
+      box.lo = box.lo.cwiseMin(v);
+      box.hi = box.hi.cwiseMax(v);
     }
   }
-  return (hi - lo).norm();
+  return box;
+}
+
+double pair_size(const RawPair& p) {
+  const PairBox box = pair_box(p);
+  return (box.hi - box.lo).norm();
 }
 
 }  // namespace dyop::workloads

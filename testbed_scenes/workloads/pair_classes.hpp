@@ -53,7 +53,14 @@ BuiltPair<T> build(const RawPair& p) {
           Triangle<T>::make(cast(p.b[0]), cast(p.b[1]), cast(p.b[2]))};
 }
 
-/// The pair's size: the diagonal of the union of both bounding boxes (unit of relative errors).
+/// The union of both triangles' bounding boxes.
+struct PairBox {
+  Vec2<double> lo;
+  Vec2<double> hi;
+};
+PairBox pair_box(const RawPair& p);
+
+/// The pair's size: the diagonal of `pair_box` (unit of relative errors).
 double pair_size(const RawPair& p);
 
 }  // namespace dyop::workloads

@@ -2,30 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
+
+#include "workloads/seeded_random.hpp"
 
 namespace dyop::workloads {
 namespace {
 
 using V = Vec2<double>;
-constexpr double kPi = 3.14159265358979323846;
 
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : rng_(seed) {}
-  double uniform(double lo, double hi) { return lo + (hi - lo) * unit_(rng_); }
-  double log_uniform(double lo_exp, double hi_exp) { return std::pow(10.0, uniform(lo_exp, hi_exp)); }
-  int below(int n) { return static_cast<int>(rng_() % static_cast<std::uint64_t>(n)); }
-  bool coin() { return (rng_() & 1u) != 0; }
-  V unit_vector() {
-    const double t = uniform(0, 2 * kPi);
-    return {std::cos(t), std::sin(t)};
-  }
-
- private:
-  std::mt19937_64 rng_;
-  std::uniform_real_distribution<double> unit_{0.0, 1.0};
-};
+using Rng = SeededRandom;
 
 // Through a volatile float: GCC 12.2 at -O2 folds a vectorised double → float → double round trip
 // of two coordinates into nothing (wrong code; found here, where the rounding went missing).
@@ -47,13 +32,6 @@ double ulps_away(Precision p, double x, int steps) {
                               : std::nextafter(x, -INFINITY);
   }
   return x;
-}
-
-// A random order of the same three vertices (rotation, and reversal half the time).
-std::array<V, 3> shuffled(Rng& g, std::array<V, 3> t) {
-  std::rotate(t.begin(), t.begin() + g.below(3), t.end());
-  if (g.coin()) std::swap(t[1], t[2]);
-  return t;
 }
 
 RawPair moved(const RawPair& p, double scale, const V& offset) {
@@ -103,7 +81,7 @@ RawPair touching_ulp(Rng& g, Precision precision, const RawPair& base) {
     b[1] = rounded(precision, x + length * (g.uniform(0.2, 1.0) * out + g.uniform(-1, 1) * e));
   }
   b[2] = rounded(precision, x + length * (g.uniform(0.3, 1.0) * out + g.uniform(-1, 1) * e));
-  return {shuffled(g, a), shuffled(g, b)};
+  return {g.shuffled(a), g.shuffled(b)};
 }
 
 // One triangle inside the other: shrunk about the centroid, about a vertex (a shared vertex and
@@ -120,7 +98,7 @@ RawPair contained(Rng& g, const RawPair& base) {
       about = outer[i] + g.uniform(0.2, 0.8) * (outer[(i + 1) % 3] - outer[i]);
     }
   }
-  RawPair p{shuffled(g, outer), shuffled(g, shrunk(outer, about, k))};
+  RawPair p{g.shuffled(outer), g.shuffled(shrunk(outer, about, k))};
   if (g.coin()) std::swap(p.a, p.b);
   return p;
 }
@@ -135,7 +113,7 @@ std::array<V, 3> flat_triangle(Rng& g, const V& centre, double flatness) {
   const double longest = std::max({1.0, std::abs(foot), std::abs(1 - foot)}) * length;
   const double height = flatness * longest * longest / length;
   const V p0 = centre - 0.5 * length * dir;
-  return shuffled(g, {p0, p0 + length * dir, p0 + foot * length * dir + height * side});
+  return g.shuffled({p0, p0 + length * dir, p0 + foot * length * dir + height * side});
 }
 
 RawPair nearly_collinear(Rng& g, Precision precision, const RawPair& base) {
