@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
-          libcli11-dev libgmp-dev nlohmann-json3-dev gnuplot-nox)
+          libcli11-dev libgmp-dev nlohmann-json3-dev gnuplot-nox
+          clang libclang-rt-14-dev)  # the last two for scripts/fuzz.sh (libFuzzer)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -450,6 +450,25 @@ TYPED_TEST(Batch, WorkedCasesInEveryWinding) {
   }
 }
 
+// Found by fuzz_batch (float). Two slivers end to end, 24 apart: the widest gap along an edge
+// normal (0.094) is inside float's touching band (0.14), yet the pair is apart by 24. The
+// distance decides, at both levels, as it does for sat (DegenerateInFrame in degenerate_test).
+TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap) {
+  using T = typename TypeParam::T;
+  const RawPair pair{{V2(0, 0), V2(0, 4), V2(4, -1020)}, {V2(-4, 36908), V2(4, 1032), V2(0, 28)}};
+  const Columns<T> cols = columns<T>(std::vector<RawPair>(11, pair));  // a block and a tail
+  for (Level level : {Level::Overlap, Level::Depth}) {
+    Outputs<T> out(cols.size());
+    ASSERT_EQ(this->run(cols, cols.size(), level, out), BatchError::None);
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      EXPECT_EQ(out.status[k], Status::Separated) << "row " << k;
+      if (level == Level::Depth) {
+        EXPECT_NEAR(out.separation[k], 24.0, separation_tolerance<T>() * 36908) << "row " << k;
+      }
+    }
+  }
+}
+
 // Contact and Manifold are refused, as are missing arrays; nothing is written then.
 TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
   using T = typename TypeParam::T;

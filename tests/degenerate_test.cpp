@@ -20,6 +20,7 @@
 #include "pairs_command.hpp"
 #include "workloads/exact_reference.hpp"
 #include "workloads/stress_classes.hpp"
+#include "support/scalars.hpp"
 
 namespace dyop::workloads {
 namespace {
@@ -90,8 +91,9 @@ bool finite(const Result<T>& r) {
 
 template <class T>
 class Degenerate : public ::testing::Test {};
-using Scalars = ::testing::Types<float, double>;
-TYPED_TEST_SUITE(Degenerate, Scalars);
+using test_support::ScalarNames;
+using test_support::Scalars;
+TYPED_TEST_SUITE(Degenerate, Scalars, ScalarNames);
 
 // What one sweep saw, for the figures and for the checks that need the whole sweep.
 struct Sweep {

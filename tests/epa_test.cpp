@@ -13,14 +13,16 @@
 #include "dyop/sat.hpp"
 #include "workloads/pair_classes.hpp"
 #include "support/make_triangle.hpp"
+#include "support/scalars.hpp"
 
 namespace dyop {
 namespace {
 
 template <class T>
 class Epa : public ::testing::Test {};
-using Scalars = ::testing::Types<float, double>;
-TYPED_TEST_SUITE(Epa, Scalars);
+using test_support::ScalarNames;
+using test_support::Scalars;
+TYPED_TEST_SUITE(Epa, Scalars, ScalarNames);
 
 using test_support::tri;
 

@@ -13,14 +13,16 @@
 #include "dyop/sat.hpp"
 #include "workloads/pair_classes.hpp"
 #include "support/make_triangle.hpp"
+#include "support/scalars.hpp"
 
 namespace dyop::workloads {
 namespace {
 
 template <class T>
 class LinCanny : public ::testing::Test {};
-using Scalars = ::testing::Types<float, double>;
-TYPED_TEST_SUITE(LinCanny, Scalars);
+using test_support::ScalarNames;
+using test_support::Scalars;
+TYPED_TEST_SUITE(LinCanny, Scalars, ScalarNames);
 
 using test_support::tri;
 

@@ -3,14 +3,16 @@
 
 #include "dyop/sat.hpp"
 #include "support/make_triangle.hpp"
+#include "support/scalars.hpp"
 
 namespace dyop {
 namespace {
 
 template <class T>
 class Sat : public ::testing::Test {};
-using Scalars = ::testing::Types<float, double>;
-TYPED_TEST_SUITE(Sat, Scalars);
+using test_support::ScalarNames;
+using test_support::Scalars;
+TYPED_TEST_SUITE(Sat, Scalars, ScalarNames);
 
 using test_support::tri;
 

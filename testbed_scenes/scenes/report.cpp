@@ -37,8 +37,9 @@ class Writer {
       write_file("paper_figure7.csv", [&](std::ostream& o) { figure7_data(o, ','); });
       write_file("paper_methods.csv", [&](std::ostream& o) { paper_methods_csv(o); });
     }
-    for (const auto& [scene, drawing] : run_.snapshots) {
-      write_file("scene_" + scene + ".svg", [&](std::ostream& o) { write_svg(drawing, o); });
+    for (const auto& snapshot : run_.snapshots) {  // not a structured binding: C++17 lambdas
+      write_file("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
+                 [&](std::ostream& o) { write_svg(snapshot.second, o); });
     }
     charts();
     write_file("report.md", [&](std::ostream& o) { report(o); });

@@ -359,8 +359,8 @@ struct BatchKernel {
                           (max3(zero, p.pa[2][0], p.pa[2][1]) - p.cb[2]) * r[5]};
     V least;
     const Order widest = order(overlap, least);
-    Vec axis;                // the widest-gap axis: the minimum-translation axis when not apart
-    if constexpr (kDepth) {  // picked as it is, then made unit
+    Vec axis = {zero, zero};  // the widest-gap axis: the minimum-translation axis when not apart
+    if constexpr (kDepth) {   // picked as it is, then made unit
       const V mx[6] = {p.ma[0].x, p.ma[1].x, p.ma[2].x, p.mb[0].x, p.mb[1].x, p.mb[2].x};
       const V my[6] = {p.ma[0].y, p.ma[1].y, p.ma[2].y, p.mb[0].y, p.mb[1].y, p.mb[2].y};
       const V scale = pick(widest, r);
@@ -371,13 +371,29 @@ struct BatchKernel {
     const V rel = least * r_least;
     const T tol = lim.touching_tolerance;
     const M penetrating = L::both(valid, L::gt(rel, L::splat(tol)));
-    const M separated = L::both(valid, L::lt(rel, L::splat(-tol)));
+    M separated = L::both(valid, L::lt(rel, L::splat(-tol)));
+    // A gap inside the band proves only that the pair does not overlap: along an edge normal it
+    // can be far less than the distance (two slivers end to end), so the distance decides.
+    const M gap_in_band = L::both(L::but_not(valid, L::either(penetrating, separated)),
+                                  L::lt(least, zero));
+    V s = -least;
+    // At Level::Overlap the pairs well apart need no distance.
+    const M apart = kDepth ? L::either(separated, gap_in_band) : gap_in_band;
+    if (L::bits(apart) != 0) {
+      V distance = s;
+      Vec closest = axis;
+      settle_apart(p, widest, apart, r_least, tol, distance, closest);
+      separated = L::either(separated,
+                            L::both(gap_in_band, L::gt(distance * r_least, L::splat(tol))));
+      s = L::select(separated, distance, s);
+      if constexpr (kDepth) {
+        axis = {L::select(separated, closest.x, axis.x), L::select(separated, closest.y, axis.y)};
+      }
+    }
 
     L::store_status(v.status + row, valid, penetrating, separated);
 
     if constexpr (kDepth) {
-      V s = -least;
-      if (L::bits(separated) != 0) settle_apart(p, widest, separated, r_least, tol, s, axis);
       L::store(v.separation + row, L::select(valid, s, zero));
       L::store(v.normal_x + row, L::select(valid, axis.x, zero));
       L::store(v.normal_y + row, L::select(valid, axis.y, zero));
