@@ -207,7 +207,7 @@ void write_json(const std::vector<BenchRecord>& records, std::ostream& out) {
 }
 
 std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
-                                       const std::string& dir) {
+                                       const std::string& dir, const std::string& sections) {
   std::vector<std::string> problems;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -268,6 +268,7 @@ std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
         << fmt("%.2e", r.err_mean) << " | " << fmt("%.1f%%", 100 * r.exact_fraction) << " | "
         << r.misclassified << " | " << r.invalid << " |\n";
     }
+    if (!sections.empty()) o << '\n' << sections;
   });
   return problems;
 }

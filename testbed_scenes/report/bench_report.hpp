@@ -51,9 +51,10 @@ void write_json(const std::vector<BenchRecord>& records, std::ostream& out);
 void write_csv(const std::vector<BenchRecord>& records, std::ostream& out);
 
 /// `dir/report.md`, `dir/bench.csv`, `dir/bench.json` and the chart `dir/time_vs_error.svg`
-/// (gnuplot; log–log, one point per method at the Depth level, Pareto front drawn). Returns
-/// messages about anything not written (an empty list when all went well).
+/// (gnuplot; log–log, one point per method at the Depth level, Pareto front drawn); `sections`
+/// (Markdown, e.g. the scaling section) is appended to the report. Returns messages about
+/// anything not written (an empty list when all went well).
 std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
-                                       const std::string& dir);
+                                       const std::string& dir, const std::string& sections = {});
 
 }  // namespace dyop::report

@@ -12,6 +12,8 @@ WorldBuild build_pyramid_rows(World& world, Rng& rng);
 WorldBuild build_stack(World& world, Rng& rng);
 WorldBuild build_stack_concave(World& world, Rng& rng);
 WorldBuild build_rain(World& world, Rng& rng);
+/// `rain` with `falling` triangles (the catalogue's has `rain_triangles`).
+WorldBuild build_rain_of(World& world, Rng& rng, int falling);
 WorldBuild build_tumbler(World& world, Rng& rng);
 WorldBuild build_slivers(World& world, Rng& rng);
 WorldBuild build_slivers_far(World& world, Rng& rng);

@@ -87,6 +87,14 @@ std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend,
   return std::make_unique<WorldScene>(e->info.name, backend, seed, skips, e->build);
 }
 
+std::unique_ptr<Scene> make_rain(int falling, box2d::Backend backend, std::uint64_t seed,
+                                 const box2d::Config& skips) {
+  if (falling < 1) throw std::invalid_argument("rain needs at least one falling triangle");
+  return std::make_unique<WorldScene>(
+      "rain", backend, seed, skips,
+      [falling](World& world, Rng& rng) { return detail::build_rain_of(world, rng, falling); });
+}
+
 SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
                        const box2d::Config& skips, Drawing* final_state) {
   const std::unique_ptr<Scene> scene = make_scene(name, backend, seed, skips);

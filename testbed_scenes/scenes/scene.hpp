@@ -60,6 +60,15 @@ std::optional<box2d::Backend> parse_backend(std::string_view name);
 std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend, std::uint64_t seed,
                                   const box2d::Config& skips = box2d::Config::all());
 
+/// Falling triangles in the catalogue's `rain`.
+inline constexpr int rain_triangles = 500;
+
+/// `rain` with `falling` triangles (≥ 1) instead of `rain_triangles`, for scaling runs: the same
+/// 1 m grid with at least 22 columns and about as many columns as rows, in a bin as wide. Throws
+/// as `make_scene`, and `std::invalid_argument` for `falling` < 1.
+std::unique_ptr<Scene> make_rain(int falling, box2d::Backend backend, std::uint64_t seed,
+                                 const box2d::Config& skips = box2d::Config::all());
+
 /// Creates, runs `steps` steps, and returns the figures (and the final state when `final_state`
 /// is given).
 SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,

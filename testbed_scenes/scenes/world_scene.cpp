@@ -40,7 +40,7 @@ WorldScene::Installation::Installation(box2d::Backend backend, const box2d::Conf
 WorldScene::Installation::~Installation() { box2d::uninstall(); }
 
 WorldScene::WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
-                       const box2d::Config& skips, WorldBuilder build)
+                       const box2d::Config& skips, const WorldBuilder& build)
     : name_(std::move(name)),
       backend_(backend),
       seed_(seed),

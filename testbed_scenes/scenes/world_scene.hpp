@@ -11,6 +11,7 @@
 /// figures: its contacts are created inside `Step`, so the probe cannot see them beforehand.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,7 +35,7 @@ struct WorldBuild {
 inline constexpr int settle_steps = 60;
 
 /// Fills an empty world (gravity −10 m/s² along y) for a seed.
-using WorldBuilder = WorldBuild (*)(World& world, Rng& rng);
+using WorldBuilder = std::function<WorldBuild(World& world, Rng& rng)>;
 
 /// A Box2D scene.
 class WorldScene : public Scene {
@@ -42,7 +43,7 @@ class WorldScene : public Scene {
   /// Installs `backend` with the skips `skips` in the plug-in (throws `std::runtime_error` if
   /// refused), then builds.
   WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
-             const box2d::Config& skips, WorldBuilder build);
+             const box2d::Config& skips, const WorldBuilder& build);
   ~WorldScene() override;
 
   void step() override;

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// How the narrow phase scales with the world: the `rain` scene with 100, 300, 1000 and 3000
+/// falling triangles under every backend, its step time and its narrow-phase time (the scaling
+/// section of `dyop bench`).
+///
+/// Times come from the scenes' own measurements (`SceneMetrics`): the median wall time of a step
+/// and Box2D's `GetProfile().collide` (contact updates), both over steps 2..N. Each size is run
+/// once per backend with the same seed, so every backend meets the same falling triangles.
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace dyop::scenes {
+
+struct ScalingOptions {
+  std::vector<int> sizes = {100, 300, 1000, 3000};  ///< falling triangles per run
+  /// Steps per run (1/60 s each), at least 2. 240 (4 s): the 3000-triangle grid, 57 m tall,
+  /// has just landed.
+  int steps = 240;
+  std::uint64_t seed = 1;
+};
+
+/// One run: a backend on `rain` with `falling` triangles.
+struct ScalingRecord {
+  std::string backend;          ///< "dyop", ..., "box2d"
+  int falling = 0;              ///< falling triangles
+  int triangles = 0;            ///< every triangle fixture, the bin's included
+  int steps = 0;                ///< steps run
+  double step_ms_median = 0;    ///< median wall time of a step (ms)
+  double narrowphase_ms_per_step = 0;  ///< Box2D's collide time per measured step (ms)
+  double narrowphase_ns_per_pair = 0;  ///< the same per contact update (ns)
+  double pairs_per_step = 0;    ///< triangle contact updates per measured step
+  double ratio_vs_box2d = 0;    ///< narrowphase_ms_per_step / box2d's at the same size
+  double pd_error_max = 0;      ///< largest |depth − exact depth| of an evaluated pair (m)
+  std::uint64_t fallbacks = 0;  ///< pairs the backend left to Box2D (0 expected)
+  bool nan_detected = false;    ///< a non-finite state or figure
+};
+
+/// Runs every backend at every size; one progress line per run on `progress`. Throws
+/// `std::invalid_argument` for a size below 1 or steps below 2.
+std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options, std::ostream& progress);
+
+/// The aligned table printed by `dyop bench`.
+void write_scaling_table(const std::vector<ScalingRecord>& records, std::ostream& out);
+
+/// The CSV (header and one line per record).
+void write_scaling_csv(const std::vector<ScalingRecord>& records, std::ostream& out);
+
+/// Writes `dir/scaling.csv` and the chart `dir/rain_scaling.svg` (gnuplot, log–log: narrow-phase
+/// and step time per step against falling triangles, one line per backend) and returns the
+/// report's Markdown section (table and chart). Problems are appended to `problems`.
+std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
+                                  const std::string& dir, std::vector<std::string>& problems);
+
+}  // namespace dyop::scenes
