@@ -15,7 +15,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   const std::array<T, 6> overlap = all_overlaps(f);
   const int best_a = argmin3(overlap, 0);
   const int best_b = argmin3(overlap, 3);
-  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
+  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A
   Result<T> r;
   const T band = touching_band(f);
   r.status = classify(overlap[least], band);
@@ -33,7 +33,10 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   } else {
     fill_from_axis(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
   }
-  fill_manifold(f, q, reference_face(overlap, q.face_hysteresis), r);
+  fill_manifold(f, q,
+                pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
+                               AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
+                r);
   return r;
 }
 

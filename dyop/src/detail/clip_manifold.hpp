@@ -38,26 +38,27 @@ inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
   const T clamped = std::min(std::max(s, lo), hi);
   const T ds = s_other - s;
   ClippedEnd<T> out;
-  out.side = s < lo ? ClipSide::Start : (s > hi ? ClipSide::End : ClipSide::None);
+  // Start (1) below the range, End (2) above it, None (0) inside: arithmetic, not branches.
+  out.side = static_cast<ClipSide>(static_cast<int>(s < lo) | static_cast<int>(s > hi) << 1);
   out.along = out.side == ClipSide::None ? from : from + (clamped - s) / ds * (T(1) - 2 * from);
   return out;
 }
 
-// A manifold with no point yet, on the face of `reference_axis`.
+// Sets `m`'s face fields for the face of `reference_axis` (its points are left as they are).
 template <class T>
-Manifold<T> empty_manifold(const PairFrame<T>& f, int reference_axis) {
+void set_reference_face(const PairFrame<T>& f, int reference_axis, Manifold<T>& m) {
   const bool ref_is_a = reference_axis < 3;
   const int e = ref_is_a ? reference_axis : reference_axis - 3;
   const Vec2<T>& n = ref_is_a ? f.ta.normal(e) : f.tb.normal(e);
-  Manifold<T> m;
   m.reference_is_a = ref_is_a;
   m.reference_edge = static_cast<std::uint8_t>((ref_is_a ? f.ta : f.tb).input_edge(e));
   m.normal = ref_is_a ? n : Vec2<T>(-n);
-  return m;
 }
 
+// Fills `m`, which has no point yet, with the manifold on the face of `reference_axis`: written
+// in place, since a Result is large and a query's time is short.
 template <class T>
-Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
+void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold<T>& m) {
   const bool ref_is_a = reference_axis < 3;
   const int e = ref_is_a ? reference_axis : reference_axis - 3;
   const Triangle<T>& rt = ref_is_a ? f.ta : f.tb;
@@ -66,11 +67,11 @@ Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
   const std::array<Vec2<T>, 3>& iv = ref_is_a ? f.b : f.a;
   const Vec2<T>& n = rt.normal(e);
 
-  Manifold<T> m = empty_manifold(f, reference_axis);
+  set_reference_face(f, reference_axis, m);
 
   T least;
   int inc;
-  min3(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
+  min3_select(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
   m.incident_edge = static_cast<std::uint8_t>(it.input_edge(inc));
 
   const Vec2<T>& v1 = rv[e];
@@ -82,7 +83,7 @@ Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
   const T lo = tangent.dot(v1) - margin;
   const T hi = tangent.dot(rv[next3(e)]) + margin;
   // The whole edge beyond one side line: Box2D's clip leaves fewer than two points, no manifold.
-  if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return m;
+  if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return;
 
   const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
   const int vertex[2] = {inc, next3(inc)};
@@ -92,13 +93,12 @@ Manifold<T> clip_manifold(const PairFrame<T>& f, int reference_axis, T margin) {
     const T separation = n.dot(p) - front;
     if (separation > margin) continue;
     const bool cut = ends[k].side != ClipSide::None;
-    const int incident = cut ? it.input_edge(inc) : it.input_vertex(vertex[k]);
+    const int incident = select_index(cut, it.input_edge(inc), it.input_vertex(vertex[k]));
     ManifoldPoint<T>& out = m.points[m.point_count++];
     out.point = (cut ? p : (k == 0 ? p0 : p1)) + f.origin;
     out.separation = cut ? separation : n.dot(k == 0 ? p0 : p1) - front;
     out.key = contact_key(!ref_is_a, m.reference_edge, incident, ends[k].side);
   }
-  return m;
 }
 
 }  // namespace dyop::detail

@@ -99,8 +99,11 @@ template <class T>
 void fill_manifold(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T>& reference,
                    Result<T>& r) {
   if (q.level != Level::Manifold) return;
-  r.manifold = -reference.overlap > q.margin ? empty_manifold(f, reference.axis)
-                                             : clip_manifold(f, reference.axis, q.margin);
+  if (-reference.overlap > q.margin) {
+    set_reference_face(f, reference.axis, r.manifold);
+  } else {
+    clip_manifold(f, reference.axis, q.margin, r.manifold);
+  }
 }
 
 // The whole answer of a method that settles on one axis (`ax.overlap` > 0: penetrating); the
