@@ -12,17 +12,31 @@ struct AxisOverlap {
   int deep = 0;     // CCW index of the other triangle's vertex that realises it
 };
 
+// The least of three (first on ties) and the two comparisons that found it.
+template <class T>
+struct Least3 {
+  T value;
+  bool one;  // d1 < d0
+  bool two;  // d2 < min(d0, d1): the least is d2
+};
+
+template <class T>
+inline Least3<T> least3(T d0, T d1, T d2) {
+  const bool one = d1 < d0;
+  const T m = one ? d1 : d0;
+  const bool two = d2 < m;
+  return {two ? d2 : m, one, two};
+}
+
 // Index and value of the smallest of three (first on ties). GCC compiles the index to branches:
 // where a long chain waits on it (the axis a Depth query settles on, then its overlap, status and
 // normal) a predicted branch lets the chain start early, and that wins even though random pairs
 // mispredict it about once per query (measured: 19 ns per Depth query, 32 ns with `min3_select`).
 template <class T>
 inline void min3(T d0, T d1, T d2, T& value, int& index) {
-  const bool one = d1 < d0;
-  const T m = one ? d1 : d0;
-  const bool two = d2 < m;
-  value = two ? d2 : m;
-  index = two ? 2 : (one ? 1 : 0);
+  const Least3<T> l = least3(d0, d1, d2);
+  value = l.value;
+  index = l.two ? 2 : (l.one ? 1 : 0);
 }
 
 // `pick ? a : b` for indices, by masks: GCC compiles an int ternary to a branch.
@@ -36,11 +50,9 @@ inline int select_index(bool pick, int a, int b) {
 // mispredicts 4.9 times, with this 2.1 times, and takes 53 ns instead of 65).
 template <class T>
 inline void min3_select(T d0, T d1, T d2, T& value, int& index) {
-  const bool one = d1 < d0;
-  const T m = one ? d1 : d0;
-  const bool two = d2 < m;
-  value = two ? d2 : m;
-  index = select_index(two, 2, static_cast<int>(one));
+  const Least3<T> l = least3(d0, d1, d2);
+  value = l.value;
+  index = select_index(l.two, 2, static_cast<int>(l.one));
 }
 
 // Axis of A's edge i: the edge line is A's support; B's deepest vertex is the least along n.
