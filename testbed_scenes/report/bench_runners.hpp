@@ -43,7 +43,8 @@ struct Answer {
 template <class T>
 std::vector<Answer<T>> answers(Runner r, const workloads::PairSet<T>& set);
 
-/// Median over `passes` timed passes over the whole set of the time per pair (ns), at `level`.
+/// Median over `passes` timed passes of the time per pair (ns), at `level`; each pass sweeps the
+/// whole set as many times as it takes to last at least 20 ms.
 /// Everything a pass needs is prepared before the first one (shapes, caches, arrays).
 template <class T>
 double time_per_pair(Runner r, const workloads::PairSet<T>& set, Level level, int passes);

@@ -8,9 +8,13 @@
 /// pivot picks the vertex of one triangle nearest to it and the edge of the other nearest to it;
 /// the edge's supporting line is taken in normal form `n·x = c` (unit n), never slope–intercept.
 ///
-/// - `dyop` (exact): the two pivot edges' axes are tried first, with the full support of the other
-///   triangle, and the query exits at once when one separates; the remaining four candidate axes
-///   then certify the minimum, so the result equals `sat`'s.
+/// - `dyop` (exact): all six candidate axes certify the minimum, so touching and penetrating
+///   answers equal `sat`'s bit for bit; for a pair found apart the pivot's features (its vertex of
+///   one triangle against its edge of the other, both ways) give the closest pair, accepted when
+///   the gap along their direction proves it (else all 18 vertex–edge pairs decide). Trying the
+///   pivot edges' axes first with an early exit, as the paper's selection suggests, was measured
+///   slower in every input class (Overlap level, float: 32–47 ns against 18–19 ns for all six axes
+///   at once, branch-free): choosing the pivot's edges costs more than the axes it could skip.
 /// - `dyop_fast` (approximate by design, the paper's heuristic with corrected maths): the depth in
 ///   a direction is the signed distance of the pivot's vertex from the pivot's edge line; the pair
 ///   penetrates when a pivot vertex lies inside the other triangle (orientation signs, not the
