@@ -15,7 +15,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   const std::array<T, 6> overlap = all_overlaps(f);
   const int best_a = argmin3(overlap, 0);
   const int best_b = argmin3(overlap, 3);
-  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A
+  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
   Result<T> r;
   const T band = touching_band(f);
   r.status = classify(overlap[least], band);

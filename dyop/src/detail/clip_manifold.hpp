@@ -39,6 +39,7 @@ inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
   const T ds = s_other - s;
   ClippedEnd<T> out;
   // Start (1) below the range, End (2) above it, None (0) inside: arithmetic, not branches.
+  static_assert(static_cast<int>(ClipSide::Start) == 1 && static_cast<int>(ClipSide::End) == 2);
   out.side = static_cast<ClipSide>(static_cast<int>(s < lo) | static_cast<int>(s > hi) << 1);
   out.along = out.side == ClipSide::None ? from : from + (clamped - s) / ds * (T(1) - 2 * from);
   return out;
