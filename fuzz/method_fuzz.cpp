@@ -22,6 +22,7 @@
 #include "dyop/method.hpp"
 #include "fuzz_input.hpp"
 #include "workloads/exact_reference.hpp"
+#include "workloads/finite_fields.hpp"
 
 namespace dyop::fuzz {
 namespace {
@@ -39,20 +40,7 @@ void require(bool ok, const char* what, const FuzzInput& in) {
   if (!ok) fail(what, in);
 }
 
-template <class T>
-bool finite_at(const Result<T>& r, Level level) {
-  if (level == Level::Overlap) return true;
-  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite();
-  if (level >= Level::Contact) ok = ok && r.witness_a.allFinite() && r.witness_b.allFinite();
-  if (level == Level::Manifold) {
-    const Manifold<T>& m = r.manifold;
-    ok = ok && m.point_count >= 0 && m.point_count <= 2 && m.normal.allFinite();
-    for (int i = 0; i < m.point_count; ++i) {
-      ok = ok && m.points[i].point.allFinite() && std::isfinite(m.points[i].separation);
-    }
-  }
-  return ok;
-}
+using workloads::finite_at;
 
 template <class T>
 double exact_bound() {

@@ -7,6 +7,7 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
+#include "workloads/finite_fields.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "dyop/box2d.hpp"
 #endif
@@ -26,21 +27,7 @@ std::optional<Method> method_of(StressRunner r) {
   }
 }
 
-// Every field `level` makes valid is finite (an Invalid answer has none).
-template <class T>
-bool finite_at(const Result<T>& r, Level level) {
-  if (r.status == Status::Invalid) return true;
-  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite();
-  if (level >= Level::Contact) ok = ok && r.witness_a.allFinite() && r.witness_b.allFinite();
-  if (level == Level::Manifold) {
-    const Manifold<T>& m = r.manifold;
-    ok = ok && m.point_count >= 0 && m.point_count <= 2 && m.normal.allFinite();
-    for (int i = 0; i < m.point_count; ++i) {
-      ok = ok && m.points[i].point.allFinite() && std::isfinite(m.points[i].separation);
-    }
-  }
-  return ok;
-}
+using workloads::finite_at;
 
 template <class T>
 StressAnswer answer_of(const Result<T>& r, bool finite) {

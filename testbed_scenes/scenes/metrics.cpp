@@ -62,4 +62,13 @@ bool all_finite(const SceneMetrics& m) {
                      [](double v) { return std::isfinite(v); });
 }
 
+void add_accuracy(const ErrorTally& errors, const PenetrationTally& penetration, SceneMetrics& m) {
+  m.max_penetration = penetration.max();
+  m.mean_penetration = penetration.mean();
+  m.pd_error_max = errors.max();
+  m.pd_error_mean = errors.mean();
+  m.misclassified = errors.misclassified();
+  m.invalid = errors.invalid();
+}
+
 }  // namespace dyop::scenes

@@ -108,6 +108,10 @@ class PenetrationTally {
   std::uint64_t count_ = 0;
 };
 
+/// Writes a run's accuracy figures into `m`: penetration (max, mean) and the backend's depth
+/// errors (max, mean, misclassified, invalid).
+void add_accuracy(const ErrorTally& errors, const PenetrationTally& penetration, SceneMetrics& m);
+
 /// FNV-1a (64-bit), fed value by value with the bit patterns of floats.
 class Fnv1a {
  public:

@@ -351,12 +351,7 @@ class PaperScene : public Scene {
     m.step_ms_median = median(step_us_) * 1e-3;
     m.narrowphase_ms_total = total_us * 1e-3;
     m.narrowphase_ns_per_pair = pairs_ > 0 ? total_us * 1e3 / static_cast<double>(pairs_) : 0;
-    m.max_penetration = penetration_.max();
-    m.mean_penetration = penetration_.mean();
-    m.pd_error_max = errors_.max();
-    m.pd_error_mean = errors_.mean();
-    m.misclassified = errors_.misclassified();
-    m.invalid = errors_.invalid();
+    add_accuracy(errors_, penetration_, m);
     // The final state: every type's pose at the last step, density 1 (mass = area; polar
     // moment about the centroid = m·(a² + b² + c²)/36).
     const double t = time_of(std::max(0, steps_ - 1));

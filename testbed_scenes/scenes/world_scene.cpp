@@ -120,12 +120,7 @@ SceneMetrics WorldScene::metrics() const {
   m.narrowphase_ms_total = collide_ms_;
   m.narrowphase_ns_per_pair =
       updates_.contacts > 0 ? collide_ms_ * 1e6 / static_cast<double>(updates_.contacts) : 0;
-  m.max_penetration = penetration_.max();
-  m.mean_penetration = penetration_.mean();
-  m.pd_error_max = errors_.max();
-  m.pd_error_mean = errors_.mean();
-  m.misclassified = errors_.misclassified();
-  m.invalid = errors_.invalid();
+  add_accuracy(errors_, penetration_, m);
   if (!watched_start_.empty()) m.top_displacement = top_displacement_;
   m.nan_detected = nan_ || !all_finite(m);
   return m;
