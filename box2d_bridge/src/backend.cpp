@@ -18,7 +18,6 @@ const char* name(Skip s) {
   switch (s) {
     case Skip::Bounds: return "bounds";
     case Skip::WarmAxis: return "warm-axis";
-    case Skip::Unmoved: return "unmoved";
   }
   return "unknown";
 }

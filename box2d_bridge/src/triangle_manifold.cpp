@@ -14,6 +14,7 @@ bool triangle_manifold(Method m, const Triangle<float>& ta, const Triangle<float
   query.level = Level::Manifold;
   query.margin = a.m_radius + b.m_radius;  // the skins: contacts are speculative, as Box2D's
   query.face_hysteresis = face_hysteresis;
+  query.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   const Result<float> r = penetrate(m, ta, tb, query, cache);
   if (r.status == Status::Invalid) return false;
 

@@ -186,9 +186,8 @@ void write_skip_tables(const CompareRun& run, std::ostream& out) {
   out << "Skips `" << on << "` against `none`, run back to back (narrow phase: ns per contact "
       << "update; step: median wall time):\n\n"
       << "| scene | backend | steps | ns/pair on | ns/pair off | on/off | step ms on | step ms off "
-         "| on/off | hashes equal | evaluations | skipped bounds | skipped warm-axis "
-         "| skipped unmoved |\n"
-      << "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|--:|\n";
+         "| on/off | hashes equal | evaluations | skipped bounds | skipped warm-axis |\n"
+      << "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|\n";
   for (const SkipMeasurement& m : run.skips) {
     const std::uint64_t of = m.on.plugin_evaluations.value_or(0);
     out << "| " << m.on.scene << " | " << m.on.backend << " | " << m.on.steps << " | "
@@ -199,8 +198,7 @@ void write_skip_tables(const CompareRun& run, std::ostream& out) {
         << fmt("%.2f", m.on.step_ms_median / m.off.step_ms_median) << " | "
         << hashes_equal(m.on, m.off) << " | " << of << " | "
         << skipped_share(skipped(m.on, box2d::Skip::Bounds), of) << " | "
-        << skipped_share(skipped(m.on, box2d::Skip::WarmAxis), of) << " | "
-        << skipped_share(skipped(m.on, box2d::Skip::Unmoved), of) << " |\n";
+        << skipped_share(skipped(m.on, box2d::Skip::WarmAxis), of) << " |\n";
   }
 
   bool breakdown = false;
@@ -209,8 +207,8 @@ void write_skip_tables(const CompareRun& run, std::ostream& out) {
     out << "\nEach skip alone against `none` (`" << box2d::name(skip_target_backend)
         << "`; `lin-canny-cache` changes nothing but `lin-canny`):\n\n"
         << "| scene | skips | ns/pair | × none | step ms | × none | hashes equal | skipped bounds "
-           "| skipped warm-axis | skipped unmoved |\n"
-        << "|---|---|--:|--:|--:|--:|---|--:|--:|--:|\n";
+           "| skipped warm-axis |\n"
+        << "|---|---|--:|--:|--:|--:|---|--:|--:|\n";
     for (const SkipMeasurement& m : run.skips) {
       if (m.alone.empty()) continue;
       std::vector<const SceneMetrics*> rows = {&m.off};
@@ -222,8 +220,7 @@ void write_skip_tables(const CompareRun& run, std::ostream& out) {
             << fmt("%.2f", narrowphase_ratio(*r, m.off)) << " | " << fmt("%.3g", r->step_ms_median)
             << " | " << fmt("%.2f", r->step_ms_median / m.off.step_ms_median) << " | "
             << hashes_equal(*r, m.off) << " | " << skipped(*r, box2d::Skip::Bounds) << " | "
-            << skipped(*r, box2d::Skip::WarmAxis) << " | " << skipped(*r, box2d::Skip::Unmoved)
-            << " |\n";
+            << skipped(*r, box2d::Skip::WarmAxis) << " |\n";
       }
     }
   }

@@ -7,7 +7,7 @@
 ///
 /// Box2D scenes add `skip_config`, the names of the skips the world ran with (an array, empty for
 /// `--skip none`), and `skips`, an object counting the evaluations skipped per reason
-/// (`{"bounds": n, "warm-axis": n, "unmoved": n}`); both are `null` for `paper`. In CSV an object
+/// (`{"bounds": n, "warm-axis": n}`); both are `null` for `paper`. In CSV an object
 /// becomes one column per key (`skips.bounds`, ...) and an array one cell, its names separated by
 /// spaces.
 

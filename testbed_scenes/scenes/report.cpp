@@ -367,7 +367,7 @@ class Writer {
     o << "**`lin-canny`** is not held to bit-identity. With `lin-canny-cache` each step's walk "
          "starts from the features the pair ended on last step, and a penetrating walk stops at "
          "a local minimum of the overlap that depends on where it starts; a pair skipped by "
-         "`bounds`, `warm-axis` or `unmoved` also leaves its cache where it was, so its next walk "
+         "`bounds` or `warm-axis` also leaves its cache where it was, so its next walk "
          "starts from older features. Without the cache every walk starts cold and the other "
          "skips only avoid pairs beyond reach (whose manifold is empty from any start) or "
          "repeat an identical evaluation, so `lin-canny` with every skip but `lin-canny-cache` "

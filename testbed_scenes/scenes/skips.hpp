@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// `--skip`: the switches of `box2d::Config` by name, as `dyop scene` and `dyop compare` take
-/// them and as the reports write them. Names: "bounds" (`bounds_early_out`), "shape-cache",
-/// "warm-axis", "lin-canny-cache", "unmoved" (`reuse_unmoved`); "all" and "none" for every one.
+/// them and as the reports write them. Names: "bounds" (`bounds_early_out`), "warm-axis",
+/// "lin-canny-cache"; "all" and "none" for every one.
 
 #include <algorithm>
 #include <array>
@@ -22,7 +22,7 @@ struct SkipSwitch {
 };
 
 /// Number of switches: the fields of `box2d::Config`.
-inline constexpr int skip_switch_count = 5;
+inline constexpr int skip_switch_count = 3;
 
 // A field added to `box2d::Config` needs its switch below.
 static_assert(sizeof(box2d::Config) == skip_switch_count * sizeof(bool),
@@ -33,14 +33,10 @@ inline const std::array<SkipSwitch, skip_switch_count>& skip_switches() {
   static const std::array<SkipSwitch, skip_switch_count> list = {{
       {"bounds", &box2d::Config::bounds_early_out,
        "pairs whose bounding circles are apart beyond reach get no axis work"},
-      {"shape-cache", &box2d::Config::shape_cache,
-       "each triangle validated and its normals computed once per contact, not every step"},
       {"warm-axis", &box2d::Config::warm_axis,
        "last step's face tried first: when it still separates beyond reach, no other work"},
       {"lin-canny-cache", &box2d::Config::lin_canny_cache,
        "lin-canny starts from last step's features (no effect on the other backends)"},
-      {"unmoved", &box2d::Config::reuse_unmoved,
-       "a pair whose two bodies have not moved keeps its manifold"},
   }};
   return list;
 }

@@ -225,7 +225,7 @@ TEST_P(ManifoldAgreement, MatchesB2CollidePolygonsOnRandomRestingAndPenetratingP
     b2Manifold box2d;
     b2CollidePolygons(&box2d, &a, xf_a, &b, xf_b);
     b2Manifold ours;
-    collide_polygons(&ours, GetParam(), &a, xf_a, &b, xf_b);
+    collide_polygons(&ours, GetParam(), a, xf_a, b, xf_b);
     const Difference d = compare(ours, box2d, a, xf_a, b, xf_b);
     if (tie) {
       ++fig.near_ties;

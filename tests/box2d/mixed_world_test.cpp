@@ -52,7 +52,7 @@ class Checker : public b2ContactListener {
       ++triangle_pairs;
       // Lin–Canny starts from the contact's own cache, which this check cannot share.
       if (backend_ == Backend::LinCanny) return;
-      collide_polygons(&expected, backend_, a, xa, b, xb);
+      collide_polygons(&expected, backend_, *a, xa, *b, xb);
       ++own_evaluations;  // counted in stats() too: the test takes them out again
       own_manifolds += expected.pointCount > 0;
     } else {

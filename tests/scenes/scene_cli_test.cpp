@@ -57,13 +57,13 @@ TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
 }
 
 TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
-  const Outcome list = run("scene rain --backend dyop --steps 3 --skip unmoved,bounds --json -");
+  const Outcome list = run("scene rain --backend dyop --steps 3 --skip warm-axis,bounds --json -");
   ASSERT_EQ(list.status, 0) << list.err;
   const nlohmann::json j = nlohmann::json::parse(list.out);
-  EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "unmoved"}));
+  EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "warm-axis"}));
   ASSERT_TRUE(j["skips"].is_object());
   EXPECT_TRUE(j["skips"].contains("warm-axis"));
-  EXPECT_NE(list.err.find("skips bounds,unmoved"), std::string::npos) << list.err;
+  EXPECT_NE(list.err.find("skips bounds,warm-axis"), std::string::npos) << list.err;
   EXPECT_EQ(run("scene stack --backend sat --steps 2 --skip none").status, 0);
   EXPECT_EQ(run("scene paper --backend dyop --steps 2 --skip all").status, 0)
       << "accepted, and ignored: no Box2D world";

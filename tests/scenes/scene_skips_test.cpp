@@ -59,8 +59,7 @@ TEST_P(SkipsInEveryScene, EverySkipOnGivesTheHashOfEverySkipOff) {
     EXPECT_GT(skipped(on, Skip::WarmAxis), 0u);
   }
   RecordProperty("skipped", std::to_string(skipped(on, Skip::Bounds)) + " bounds, " +
-                                std::to_string(skipped(on, Skip::WarmAxis)) + " warm-axis, " +
-                                std::to_string(skipped(on, Skip::Unmoved)) + " unmoved of " +
+                                std::to_string(skipped(on, Skip::WarmAxis)) + " warm-axis of " +
                                 std::to_string(on.plugin_evaluations.value_or(0)));
 }
 
@@ -98,8 +97,7 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, LinCannySkips, ::testing::ValuesIn(box2d_sce
 
 TEST(SkipArgument, AllNoneAndLists) {
   auto flags = [](const Config& c) {
-    return std::vector<bool>{c.bounds_early_out, c.shape_cache, c.warm_axis, c.lin_canny_cache,
-                             c.reuse_unmoved};
+    return std::vector<bool>{c.bounds_early_out, c.warm_axis, c.lin_canny_cache};
   };
   ASSERT_TRUE(parse_skips("all").ok());
   EXPECT_EQ(flags(parse_skips("all").config), flags(Config::all()));
@@ -107,8 +105,8 @@ TEST(SkipArgument, AllNoneAndLists) {
   EXPECT_EQ(flags(parse_skips("none").config), flags(Config::none()));
   const ParsedSkips list = parse_skips("warm-axis,bounds,warm-axis");
   ASSERT_TRUE(list.ok()) << list.error;
-  EXPECT_EQ(flags(list.config), (std::vector<bool>{true, false, true, false, false}));
-  const ParsedSkips each = parse_skips("bounds,shape-cache,warm-axis,lin-canny-cache,unmoved");
+  EXPECT_EQ(flags(list.config), (std::vector<bool>{true, true, false}));
+  const ParsedSkips each = parse_skips("bounds,warm-axis,lin-canny-cache");
   ASSERT_TRUE(each.ok()) << each.error;
   EXPECT_EQ(flags(each.config), flags(Config::all()));
   EXPECT_EQ(skip_argument(each.config), "all");
@@ -127,7 +125,7 @@ TEST(SkipArgument, AnUnknownOrEmptyNameIsAnErrorNamingIt) {
   EXPECT_FALSE(bad.ok());
   EXPECT_NE(bad.error.find("'nope'"), std::string::npos) << bad.error;
   EXPECT_NE(bad.error.find("warm-axis"), std::string::npos) << "lists the names: " << bad.error;
-  for (const char* text : {"", "bounds,", ",bounds", "all,bounds", "Bounds", "bounds ,unmoved"}) {
+  for (const char* text : {"", "bounds,", ",bounds", "all,bounds", "Bounds", "bounds ,warm-axis", "unmoved"}) {
     EXPECT_FALSE(parse_skips(text).ok()) << '"' << text << '"';
   }
 }
@@ -145,13 +143,12 @@ TEST(SkipFigures, JsonHasTheSkipCountsAndTheSkipList) {
   const nlohmann::json j = json_of(m);
   ASSERT_TRUE(j["skips"].is_object());
   EXPECT_EQ(j["skips"].size(), static_cast<std::size_t>(box2d::skip_count));
-  for (const char* reason : {"bounds", "warm-axis", "unmoved"}) {
+  for (const char* reason : {"bounds", "warm-axis"}) {
     ASSERT_TRUE(j["skips"].contains(reason)) << reason;
     EXPECT_TRUE(j["skips"][reason].is_number_unsigned()) << reason;
   }
   EXPECT_EQ(j["skips"]["bounds"], skipped(m, Skip::Bounds));
   EXPECT_GT(j["skips"]["bounds"].get<std::uint64_t>(), 0u);
-  EXPECT_EQ(j["skips"]["unmoved"], 0u) << "unmoved is off";
   EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "warm-axis"}));
   EXPECT_EQ(json_of(run_scene("stack", Backend::Dyop, 2, 0, Config::none()))["skip_config"],
             nlohmann::json::array());
@@ -163,14 +160,14 @@ TEST(SkipFigures, JsonHasTheSkipCountsAndTheSkipList) {
 
 TEST(SkipFigures, CsvHasOneColumnPerReason) {
   const std::vector<std::string>& columns = csv_columns();
-  for (const char* c : {"skip_config", "skips.bounds", "skips.warm-axis", "skips.unmoved"}) {
+  for (const char* c : {"skip_config", "skips.bounds", "skips.warm-axis"}) {
     EXPECT_NE(std::find(columns.begin(), columns.end(), c), columns.end()) << c;
   }
   const SceneMetrics m =
-      run_scene("stack", Backend::Sat, 3, 0, parse_skips("bounds,unmoved").config);
+      run_scene("stack", Backend::Sat, 3, 0, parse_skips("bounds,lin-canny-cache").config);
   const std::string row = csv_row(m);
   EXPECT_EQ(std::count(row.begin(), row.end(), ','), static_cast<long>(columns.size()) - 1) << row;
-  EXPECT_NE(row.find(",bounds unmoved,"), std::string::npos) << row;
+  EXPECT_NE(row.find(",bounds lin-canny-cache,"), std::string::npos) << row;
 }
 
 }  // namespace

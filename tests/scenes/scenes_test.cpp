@@ -41,7 +41,6 @@ TEST_P(EveryScene, RunsWithoutNaNAndWithoutFallbacks) {
     EXPECT_LE(m.triangle_pairs, *m.plugin_evaluations);
   }
   EXPECT_FALSE(box2d::installed().has_value()) << "the scene left its backend installed";
-  EXPECT_EQ(box2d::live_contacts(), 0);
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {

@@ -4,7 +4,7 @@
 /// method of the library) inside an unchanged Box2D program.
 ///
 ///     #include <dyop/box2d.hpp>
-///     dyop::box2d::install(dyop::box2d::Backend::Dyop);  // before the first step
+///     dyop::box2d::install(dyop::box2d::Backend::Dyop);  // at any moment
 ///
 /// Only polygon–polygon pairs are dispatched through Box2D's contact registry. Of those, a pair of
 /// two triangles (3-vertex `b2PolygonShape`s) goes to the installed backend; every other polygon
@@ -24,8 +24,8 @@
 /// - Geometry is computed in A's body frame (B's vertices moved by `b2MulT(xfA, xfB)`), so float
 ///   accuracy is relative to the shapes' size, not to their distance from the world origin.
 ///
-/// Not thread-safe: Box2D's registry is process-wide, and so are `install`, the live-contact count
-/// and `stats`. Use one thread for Box2D, as Box2D 2.4 itself requires.
+/// Not thread-safe: Box2D's registry is process-wide, and so are `install` and `stats`. Use one
+/// thread for Box2D, as Box2D 2.4 itself requires.
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
@@ -74,7 +74,6 @@ inline constexpr float face_hysteresis = 0.1f * b2_linearSlop;
 /// How an `install` or `uninstall` went.
 enum class InstallStatus : std::uint8_t {
   Done,               ///< the requested backend (or Box2D's own contact) is now registered
-  ContactsExist,      ///< refused: polygon contacts made by the plug-in still exist
   UnsupportedMethod,  ///< refused: the method is not offered to Box2D (`DyopPaper`)
 };
 
@@ -91,30 +90,33 @@ struct InstallResult {
 /// skipped step leaves the warm-start cache where it was, and with `DyopFast`, whose manifold can
 /// lie about far pairs, an early-out can change the answer. All on by default.
 ///
-/// Sensors need nothing here: Box2D 2.4 never asks a contact of a sensor for a manifold
-/// (`b2Contact::Update` calls `b2TestOverlap`, an overlap test only, and skips `Evaluate`).
+/// Not switches, because they always pay: each contact validates its two triangles once, when it
+/// first evaluates, and then places the shapes' own vertices and normals (`b2PolygonShape` holds
+/// them) without validating again; pairs apart beyond the skins get no Euclidean distance
+/// (`Apart::Gap`). Sensors need nothing here: Box2D 2.4 never asks a sensor's contact for a
+/// manifold (`b2Contact::Update` calls `b2TestOverlap` and skips `Evaluate`).
 struct Config {
   /// A pair whose bounding circles are farther apart than a manifold can reach (`reach`) gets
   /// the empty manifold before any axis work. Box2D's broad phase lets through pairs whose fat
   /// AABBs (grown by 0.1 m) overlap, many of them apart.
   bool bounds_early_out = true;
-  /// Each triangle is validated and its normals computed once, in its body frame, when the
-  /// contact is made, and only moved (rotated) into A's frame each step; off: redone every step.
-  bool shape_cache = true;
   /// The face the pair was judged on last step is tried first: when it still separates the pair
   /// beyond `reach`, no other work is done (DyOP's pivot choice, warm-started).
   bool warm_axis = true;
   /// `LinCanny` starts from the features the pair ended on last step; off: every step cold.
   bool lin_canny_cache = true;
-  /// A pair whose two bodies have not moved since its last evaluation (bit-identical transforms)
-  /// keeps its manifold.
-  bool reuse_unmoved = true;
 
   /// Every skip on (the default).
   static Config all() { return {}; }
   /// Every skip off: the work of every step done in full.
-  static Config none() { return {false, false, false, false, false}; }
+  static Config none() { return {false, false, false}; }
 };
+
+/// True when `x` and `y` switch the same skips.
+inline bool operator==(const Config& x, const Config& y) {
+  return x.bounds_early_out == y.bounds_early_out && x.warm_axis == y.warm_axis &&
+         x.lin_canny_cache == y.lin_canny_cache;
+}
 
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
 /// points are kept up to `margin` in front of the reference face and `margin` beyond its ends,
@@ -126,49 +128,77 @@ inline float reach(float margin) { return 2 * margin + face_hysteresis; }
 enum class Skip : std::uint8_t {
   Bounds,    ///< bounding circles apart beyond `reach` (`Config::bounds_early_out`)
   WarmAxis,  ///< last step's face still separates beyond `reach` (`Config::warm_axis`)
-  Unmoved,   ///< neither body moved since the last evaluation (`Config::reuse_unmoved`)
 };
 
 /// Number of skip reasons: the size of `Stats::skipped`.
-inline constexpr int skip_count = 3;
+inline constexpr int skip_count = 2;
 
-/// "bounds", "warm-axis", "unmoved".
+/// "bounds", "warm-axis".
 const char* name(Skip s);
 
-/// Registers the plug-in's contact for polygon–polygon pairs, with `backend` for triangle pairs,
-/// and resets `stats`. Installing the backend already installed does nothing and succeeds.
-/// Refused (`ContactsExist`) while contacts made by the plug-in exist: Box2D frees a contact with
-/// the size registered at the time it is destroyed, so the registration must not change under a
-/// live contact. Call it before Box2D's own code has made any polygon contact (typically before
-/// the first `b2World::Step`): contacts made by Box2D's own `b2PolygonContact` are not counted.
+/// What the plug-in remembers about one polygon pair between evaluations: 16 bytes, held inside
+/// each of its contacts (no heap: `b2World`'s destructor frees contacts without destroying them).
+/// A caller of `collide_polygons` that replays one pair's evaluations keeps one for it.
+/// Default-constructed: nothing known yet (the first evaluation looks at the shapes).
+struct ContactMemory {
+  /// What the two shapes were found to be on the first evaluation.
+  enum class Shapes : std::uint8_t {
+    Unchecked,         ///< not evaluated yet
+    Triangles,         ///< two triangles accepted by `Triangle<float>::make`: the backend answers
+    InvalidTriangles,  ///< two triangles, one rejected by `Triangle<float>::make`: Box2D answers
+    Polygons,          ///< a side with more than 3 vertices: `b2CollidePolygons` answers
+  };
+  LinCannyCache lin_canny;  ///< `LinCanny`'s last features (`Config::lin_canny_cache`)
+  /// The face the last evaluation judged the pair on: 0..2 A's edges, 3..5 B's, -1 none yet
+  /// (`Config::warm_axis`).
+  std::int8_t last_face = -1;
+  Shapes shapes = Shapes::Unchecked;  ///< set by the first evaluation
+  /// `Shapes::Triangles`: distance from each shape's centroid (`m_centroid`) to its farthest
+  /// vertex, metres, body frame (`Config::bounds_early_out`).
+  float radius_a = 0;
+  float radius_b = 0;  ///< see `radius_a`
+};
+
+/// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
+/// skips) for triangle pairs, and resets `stats`. Never refused for a backend, and safe at any
+/// moment: before the first step, between the steps of running worlds, with several worlds alive,
+/// after a world was deleted. What holds:
+/// - Box2D makes each contact with whatever is registered at that moment, and every contact is
+///   freed as what it is: the plug-in's destroy function hands Box2D's own contacts to Box2D's
+///   own, and Box2D's own (registered again by `uninstall`) frees the plug-in's correctly, as their
+///   destructor is virtual and their size falls in the same class of Box2D's block allocator (a
+///   static assertion holds it).
+/// - Every contact the plug-in made follows the installed backend and skips from the next step
+///   on; after `uninstall` it answers with `b2CollidePolygons`, exactly as Box2D's own contact.
+/// - Contacts Box2D's own code made before the install keep Box2D's answer until they end (when
+///   the two fixtures' fat AABBs stop overlapping): Box2D offers no way to replace a live contact.
+/// Installing the installed backend with the same skips does nothing and succeeds.
 InstallResult install(Backend backend, const Config& config = Config::all());
 
 /// `install` by library method: `Dyop`, `DyopFast`, `LinCanny`, `Sat`, `Epa`; `DyopPaper` is
 /// refused (`UnsupportedMethod`).
 InstallResult install(Method method, const Config& config = Config::all());
 
-/// Restores what was registered for polygon pairs before the first `install` (Box2D's own
-/// `b2PolygonContact`). Does nothing when not installed. Refused (`ContactsExist`) while
-/// contacts made by the plug-in exist.
+/// Registers again what was registered for polygon pairs before the plug-in was installed
+/// (Box2D's own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made
+/// after it is bit-identical to one that never saw the plug-in. Never refused, safe at any moment
+/// (see `install`); does nothing when not installed.
 InstallResult uninstall();
 
 /// The installed backend, or nothing when Box2D's own contact is registered.
 std::optional<Backend> installed();
 
-/// The skips of contacts made from now on (the last `install`'s).
+/// The skips of the installed backend (the last `install`'s).
 Config installed_config();
 
-/// Contacts made by the plug-in that Box2D has not destroyed yet. Note: `b2World`'s destructor
-/// frees its contacts without destroying them, so they stay counted; to switch or uninstall after
-/// deleting a world, destroy its bodies first (`b2World::DestroyBody` destroys their contacts).
-int live_contacts();
-
-/// The plug-in's answer for one polygon pair, exactly what its contact's `Evaluate` computes:
-/// triangle pairs through `backend`, other polygon pairs through `b2CollidePolygons`. `cache` is
-/// used by `LinCanny` only (nullptr: cold start). Counted in `stats`.
-void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape* shape_a,
-                      const b2Transform& xf_a, const b2PolygonShape* shape_b,
-                      const b2Transform& xf_b, LinCannyCache* cache = nullptr);
+/// The plug-in's answer for one polygon pair, exactly what its contact's `Evaluate` computes
+/// with `config`: triangle pairs through `backend`, other polygon pairs through
+/// `b2CollidePolygons`. `memory` is the pair's state from its previous evaluation (updated);
+/// nullptr: nothing remembered, a cold evaluation. Counted in `stats`.
+void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape& shape_a,
+                      const b2Transform& xf_a, const b2PolygonShape& shape_b,
+                      const b2Transform& xf_b, ContactMemory* memory = nullptr,
+                      const Config& config = Config::all());
 
 /// Counters since the last `install` or `reset_stats`.
 struct Stats {
@@ -178,9 +208,9 @@ struct Stats {
   std::uint64_t polygon_pairs = 0;
   /// Triangle-pair evaluations that produced a non-empty manifold.
   std::uint64_t manifolds = 0;
-  /// Triangle pairs the backend could not answer (`Status::Invalid`, or a triangle too thin for
-  /// `Triangle::make` once moved into A's frame), answered by `b2CollidePolygons` instead so that
-  /// the simulation goes on. Nonzero means the backend's figures include Box2D's answers.
+  /// Triangle pairs the backend could not answer (`Status::Invalid`, or a triangle rejected by
+  /// `Triangle<float>::make`), answered by `b2CollidePolygons` instead so that the simulation goes
+  /// on. Nonzero means the backend's figures include Box2D's answers.
   std::uint64_t fallbacks = 0;
   /// Triangle-pair evaluations answered without running the backend, per reason (index:
   /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`.

@@ -31,7 +31,22 @@ enum class Level : std::uint8_t {
   Manifold,  ///< + up to two clipped contact points (as Box2D's solver needs)
 };
 
-/// A query: the level, and for `Level::Manifold` how contact points are kept.
+/// What a query at `Level::Depth` or above reports for a pair found apart.
+enum class Apart : std::uint8_t {
+  /// The Euclidean distance, its direction and (`Level::Contact` and above) the closest points
+  /// and features: the exact answer, which costs a search over vertex–edge pairs.
+  Distance,
+  /// Only the proof of separation: `separation` is the largest gap along a candidate axis (an
+  /// edge normal of either triangle), a lower bound on the distance, and `normal` that axis; the
+  /// witnesses and features are left at their defaults. For callers that want penetration depth
+  /// and nothing for pairs apart (the paper's setting; a Box2D manifold beyond the skins). The
+  /// exact methods (`dyop`, `sat`) honour it; the others find the distance on their way and
+  /// report it (`lin_canny`, `epa`) or never compute one (`dyop_fast`, `dyop_paper`).
+  Gap,
+};
+
+/// A query: the level, what to report for pairs apart, and for `Level::Manifold` how contact
+/// points are kept.
 template <class T>
 struct Query {
   Level level = Level::Depth;  ///< what to compute
@@ -43,6 +58,9 @@ struct Query {
   /// exceeds A's best by more than this (length units; Box2D uses 0.1·linearSlop) — hysteresis
   /// against the reference face flipping between frames. 0 takes the minimum-depth face.
   T face_hysteresis = 0;
+  /// Level ≥ Depth: the distance of a pair found apart, or only a gap that proves it (`Apart`).
+  /// The status is the same either way: a gap inside the touching band is decided by the distance.
+  Apart apart = Apart::Distance;
 };
 
 /// A vertex or an edge of one triangle, by caller's index.
@@ -84,15 +102,18 @@ struct Result {
   Status status = Status::Invalid;  ///< always valid
   /// Invalid only: a static string naming what the method could not handle; nullptr otherwise.
   const char* reason = nullptr;
-  /// Level ≥ Depth, not Invalid: signed; `-depth` when penetrating, the distance when apart.
+  /// Level ≥ Depth, not Invalid: signed; `-depth` when penetrating, the distance when apart
+  /// (with `Apart::Gap`, the exact methods give a lower bound on it: the largest axis gap).
   T separation = 0;
   /// Level ≥ Depth, not Invalid: `max(0, -separation)`, length units, ≥ 0.
   T depth = 0;
   /// Level ≥ Depth, not Invalid: unit, A to B. Penetrating or touching: the minimum-translation
-  /// axis (B moved by `depth * normal` separates). Separated: from `witness_a` to `witness_b`.
+  /// axis (B moved by `depth * normal` separates). Separated: from `witness_a` to `witness_b`
+  /// (with `Apart::Gap`: the separating axis whose gap is `separation`).
   Vec2<T> normal = Vec2<T>::Zero();
   /// Level ≥ Contact, not Invalid: world. Penetrating: the deepest point of A inside B or its
-  /// projection, so that `witness_a - witness_b == depth * normal`. Separated: closest points.
+  /// projection, so that `witness_a - witness_b == depth * normal`. Separated: closest points
+  /// (`Apart::Distance` only; with `Apart::Gap` the witnesses and features keep their defaults).
   Vec2<T> witness_a = Vec2<T>::Zero();
   Vec2<T> witness_b = Vec2<T>::Zero();  ///< Level ≥ Contact: see `witness_a`
   Feature feature_a;  ///< Level ≥ Contact: the feature of A that realises the answer

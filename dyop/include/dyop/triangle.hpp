@@ -73,6 +73,17 @@ class Triangle {
   /// Validates `p0, p1, p2` (world coordinates, any winding). Never asserts, never fixes input.
   static TriangleOrError<T> make(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2);
 
+  /// A triangle from data validated before, placed by the rigid motion x ↦ R·x + translation (R
+  /// as in `moved`): `ccw` are three vertices that `make` accepted, counter-clockwise, and
+  /// `normals` their unit outward edge normals (normal `i` for the edge from vertex `i` to `i+1`).
+  /// Nothing is checked or normalised: the caller vouches for the data. This is how a shape
+  /// validated once is placed every step at no validation cost (the Box2D plug-in: a
+  /// `b2PolygonShape` holds its vertices and normals). Edge lengths are measured along the edges'
+  /// tangents (the normals turned left), with no square root.
+  static Triangle from_validated(const std::array<Vec2<T>, 3>& ccw,
+                                 const std::array<Vec2<T>, 3>& normals, T c = 1, T s = 0,
+                                 const Vec2<T>& translation = Vec2<T>::Zero());
+
   /// CCW vertex `i` (0..2), world coordinates.
   const Vec2<T>& vertex(int i) const { return v_[i]; }
   /// Unit outward normal of CCW edge `i` (from vertex `i` to vertex `i+1`).

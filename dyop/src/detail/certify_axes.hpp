@@ -25,6 +25,8 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   const Closest<T> near = gap_in_band ? find(f) : Closest<T>{};
   if (gap_in_band && near.distance > band) {
     fill_closest(f, q.level, near, r);
+  } else if (r.status == Status::Separated && q.apart == Apart::Gap) {
+    fill_gap(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
   } else if (r.status == Status::Separated) {
     fill_separated(f, q.level, r, find);
   } else if (q.level >= Level::Contact) {

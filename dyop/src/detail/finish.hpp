@@ -69,6 +69,17 @@ void fill_closest(const PairFrame<T>& f, Level level, const Closest<T>& c, Resul
   r.feature_b = input_feature(f.tb, c.feature_b);
 }
 
+// A pair proven apart by axis `ax` (`ax.overlap` < 0), answered with the gap alone (`Apart::Gap`):
+// no distance, witnesses or features.
+template <class T>
+void fill_gap(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax, Result<T>& r) {
+  r.status = Status::Separated;
+  if (level == Level::Overlap) return;
+  r.separation = -ax.overlap;
+  r.depth = 0;
+  r.normal = f.axis(ax.axis);
+}
+
 // A pair proven apart whose closest features are still to be found, by `find` (by default all
 // 18 vertex–edge pairs), only when the level asks for more than the status.
 template <class T, class Find = AllFeatures<T>>

@@ -1,0 +1,26 @@
+#pragma once
+// Internal: what is installed right now, read by every evaluation of the plug-in's contacts.
+
+#include <optional>
+
+#include "contact_registry.hpp"
+#include "dyop/box2d.hpp"
+
+namespace dyop::box2d::detail {
+
+struct Installation {
+  // The backend the plug-in's contacts answer with; nothing: uninstalled, they answer as Box2D's
+  // own contact does (`b2CollidePolygons`).
+  std::optional<Backend> backend;
+  Config config;  // the skips of `backend`
+  // What was registered for polygon pairs before the first install: Box2D's own
+  // b2PolygonContact (its functions are not exported, so they can only be saved from the
+  // registry). Valid once `saved` is true.
+  PolygonContactFcns box2d_own;
+  bool saved = false;
+};
+
+// The process-wide installation (single-threaded, like Box2D 2.4).
+Installation& installation();
+
+}  // namespace dyop::box2d::detail
