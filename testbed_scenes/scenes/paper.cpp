@@ -49,7 +49,8 @@ constexpr Path kPaths[type_count] = {
 
 // Every method behind one signature, so that all are called alike (one indirect call each).
 using Fn = Result<float> (*)(const Triangle<float>&, const Triangle<float>&, LinCannyCache*);
-constexpr Query<float> kDepth{Level::Depth};
+// The paper asks for penetration depths: pairs apart need only the proof (`Apart::Gap`).
+constexpr Query<float> kDepth{Level::Depth, 0, 0, Apart::Gap};
 
 Result<float> run_dyop(const Triangle<float>& a, const Triangle<float>& b, LinCannyCache*) {
   return dyop::dyop(a, b, kDepth);
