@@ -42,13 +42,15 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
   memory.radius_b = bounding_radius(b);
 }
 
-// The shape's triangle placed by `xf` (Box2D's CCW vertices and its own unit normals).
-Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
+// The shape's triangle placed by the rotation (c, s) and the translation `p` (Box2D's CCW
+// vertices and its own unit normals); the default is the shape's own body frame.
+Triangle<float> placed(const b2PolygonShape& shape, float c = 1, float s = 0,
+                       const b2Vec2& p = b2Vec2_zero) {
   const std::array<Vec2<float>, 3> v = {vec(shape.m_vertices[0]), vec(shape.m_vertices[1]),
                                         vec(shape.m_vertices[2])};
   const std::array<Vec2<float>, 3> n = {vec(shape.m_normals[0]), vec(shape.m_normals[1]),
                                         vec(shape.m_normals[2])};
-  return Triangle<float>::from_validated(v, n, xf.q.c, xf.q.s, vec(xf.p));
+  return Triangle<float>::from_validated(v, n, c, s, vec(p));
 }
 
 // Separation of the pair along face `face` (0..2: A's edge, 3..5: B's), with the other
@@ -111,8 +113,8 @@ void evaluate_pair(b2Manifold* manifold, Backend backend, const Config& config,
   bool answered = false;
   if (method && memory.shapes == Shapes::Triangles) {
     LinCannyCache cold;
-    answered = triangle_manifold(*method, placed(a, b2Transform(b2Vec2_zero, b2Rot(0))),
-                                 placed(b, b_in_a), a, b, b_in_a,
+    answered = triangle_manifold(*method, placed(a), placed(b, b_in_a.q.c, b_in_a.q.s, b_in_a.p),
+                                 a, b, b_in_a,
                                  config.lin_canny_cache ? &memory.lin_canny : &cold, manifold,
                                  &memory.last_face);
   }

@@ -73,22 +73,6 @@ Triangle<T> Triangle<T>::moved(T c, T s, const Vec2<T>& translation) const {
   return t;
 }
 
-template <class T>
-Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw,
-                                       const std::array<Vec2<T>, 3>& normals, T c, T s,
-                                       const Vec2<T>& translation) {
-  Triangle<T> t;
-  for (int i = 0; i < 3; ++i) {
-    const Vec2<T>& v = ccw[i];
-    const Vec2<T>& n = normals[i];
-    t.len_[i] = Vec2<T>(-n.y(), n.x()).dot(ccw[(i + 1) % 3] - v);
-    t.v_[i] = Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + translation;
-    t.n_[i] = Vec2<T>(c * n.x() - s * n.y(), s * n.x() + c * n.y());
-  }
-  t.size_ = std::max({t.len_[0], t.len_[1], t.len_[2]});
-  return t;
-}
-
 template class Triangle<float>;
 template class Triangle<double>;
 
