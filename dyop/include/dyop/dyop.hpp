@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// DyOP-PD, the Dynamic Pivot Point technique (`../shared/paper`), reconstructed and corrected.
+/// DyOP-PD, the Dynamic Pivot Point technique (the paper and its corrections: `docs/paper.md`),
+/// reconstructed and corrected.
 ///
 /// The pivot is the centre of the intersection box of the two triangles' AABBs (per axis the
 /// midpoint of [max(minA, minB), min(maxA, maxB)]: the centre of the gap when the boxes are apart),
