@@ -24,18 +24,6 @@ const char* name(Skip s) {
 
 namespace detail {
 
-std::optional<Method> method_of(Backend b) {
-  switch (b) {
-    case Backend::Dyop: return Method::Dyop;
-    case Backend::DyopFast: return Method::DyopFast;
-    case Backend::LinCanny: return Method::LinCanny;
-    case Backend::Sat: return Method::Sat;
-    case Backend::Epa: return Method::Epa;
-    case Backend::Box2D: break;
-  }
-  return std::nullopt;
-}
-
 std::optional<Backend> backend_of(Method m) {
   switch (m) {
     case Method::Dyop: return Backend::Dyop;

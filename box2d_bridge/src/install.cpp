@@ -4,15 +4,6 @@
 
 namespace dyop::box2d {
 
-namespace detail {
-
-Installation& installation() {
-  static Installation current;
-  return current;
-}
-
-}  // namespace detail
-
 InstallResult install(Backend backend, const Config& config) {
   detail::Installation& now = detail::installation();
   if (now.backend == backend && now.config == config) {

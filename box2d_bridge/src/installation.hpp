@@ -20,7 +20,9 @@ struct Installation {
   bool saved = false;
 };
 
-// The process-wide installation (single-threaded, like Box2D 2.4).
-Installation& installation();
+// The process-wide installation (single-threaded, like Box2D 2.4); inline, as every contact
+// update reads it.
+inline Installation current_installation;
+inline Installation& installation() { return current_installation; }
 
 }  // namespace dyop::box2d::detail

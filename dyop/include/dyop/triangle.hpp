@@ -82,8 +82,11 @@ class Triangle {
   /// `b2PolygonShape` holds its vertices and normals). Edge lengths are measured along the edges'
   /// tangents (the normals turned left), with no square root.
   static Triangle from_validated(const std::array<Vec2<T>, 3>& ccw,
-                                 const std::array<Vec2<T>, 3>& normals, T c = 1, T s = 0,
-                                 const Vec2<T>& translation = Vec2<T>::Zero());
+                                 const std::array<Vec2<T>, 3>& normals, T c, T s,
+                                 const Vec2<T>& translation);
+  /// `from_validated` where the data is already in place (no motion: no arithmetic on it).
+  static Triangle from_validated(const std::array<Vec2<T>, 3>& ccw,
+                                 const std::array<Vec2<T>, 3>& normals);
 
   /// CCW vertex `i` (0..2), world coordinates.
   const Vec2<T>& vertex(int i) const { return v_[i]; }
@@ -135,6 +138,19 @@ inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw
     t.len_[i] = Vec2<T>(-n.y(), n.x()).dot(ccw[i == 2 ? 0 : i + 1] - v);
     t.v_[i] = Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + translation;
     t.n_[i] = Vec2<T>(c * n.x() - s * n.y(), s * n.x() + c * n.y());
+  }
+  t.size_ = std::max(std::max(t.len_[0], t.len_[1]), t.len_[2]);
+  return t;
+}
+
+template <class T>
+inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw,
+                                              const std::array<Vec2<T>, 3>& normals) {
+  Triangle<T> t;
+  t.v_ = ccw;
+  t.n_ = normals;
+  for (int i = 0; i < 3; ++i) {
+    t.len_[i] = Vec2<T>(-normals[i].y(), normals[i].x()).dot(ccw[i == 2 ? 0 : i + 1] - ccw[i]);
   }
   t.size_ = std::max(std::max(t.len_[0], t.len_[1]), t.len_[2]);
   return t;
