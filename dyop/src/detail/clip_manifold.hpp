@@ -87,18 +87,22 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
   if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return;
 
   const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
+  const Vec2<T>* vertex_point[2] = {&p0, &p1};
   const int vertex[2] = {inc, next3(inc)};
+  const int incident_edge = it.input_edge(inc);
   const T front = n.dot(v1);
   for (int k = 0; k < 2; ++k) {
-    const Vec2<T> p = p0 + ends[k].along * (p1 - p0);
+    // An end the side lines did not cut is the incident vertex itself, bit for bit.
+    const bool cut = ends[k].side != ClipSide::None;
+    const Vec2<T> p = cut ? Vec2<T>(p0 + ends[k].along * (p1 - p0)) : *vertex_point[k];
     const T separation = n.dot(p) - front;
     if (separation > margin) continue;
-    const bool cut = ends[k].side != ClipSide::None;
-    const int incident = select_index(cut, it.input_edge(inc), it.input_vertex(vertex[k]));
     ManifoldPoint<T>& out = m.points[m.point_count++];
-    out.point = (cut ? p : (k == 0 ? p0 : p1)) + f.origin;
-    out.separation = cut ? separation : n.dot(k == 0 ? p0 : p1) - front;
-    out.key = contact_key(!ref_is_a, m.reference_edge, incident, ends[k].side);
+    out.point = p + f.origin;
+    out.separation = separation;
+    out.key = contact_key(!ref_is_a, m.reference_edge,
+                          select_index(cut, incident_edge, it.input_vertex(vertex[k])),
+                          ends[k].side);
   }
 }
 
