@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -114,6 +115,18 @@ double timed_pass(const ContactStream& stream, std::optional<box2d::Backend> bac
   return total * 1e9 / static_cast<double>(calls);
 }
 
+const WorldBuilder* checked_builder(std::string_view name, int steps) {
+  const WorldBuilder* build = detail::find_builder(name);
+  if (build == nullptr) {
+    throw std::invalid_argument(find_scene(name) == nullptr
+                                    ? "unknown scene '" + std::string(name) + "'"
+                                    : "scene '" + std::string(name) +
+                                          "' has no Box2D world: no contact stream");
+  }
+  if (steps < 2) throw std::invalid_argument("a contact stream needs at least 2 steps");
+  return build;
+}
+
 }  // namespace
 
 std::uint64_t ContactStream::triangle_calls() const {
@@ -131,14 +144,7 @@ std::vector<std::string> stream_scenes() {
 }
 
 ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed) {
-  const WorldBuilder* build = detail::find_builder(name);
-  if (build == nullptr) {
-    throw std::invalid_argument(find_scene(name) == nullptr
-                                    ? "unknown scene '" + std::string(name) + "'"
-                                    : "scene '" + std::string(name) +
-                                          "' has no Box2D world: no contact stream");
-  }
-  if (steps < 2) throw std::invalid_argument("a contact stream needs at least 2 steps");
+  const WorldBuilder* build = checked_builder(name, steps);
   box2d::uninstall();
 
   ContactStream stream;
@@ -174,6 +180,17 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
     world.step();
   }
   return stream;
+}
+
+std::uint64_t world_evaluations(std::string_view name, int steps, std::uint64_t seed) {
+  checked_builder(name, steps);
+  const std::unique_ptr<Scene> scene = make_scene(name, box2d::Backend::Box2D, seed);
+  scene->step();  // step 1 is not in the stream
+  const box2d::Stats first = box2d::stats();
+  for (int step = 2; step <= steps; ++step) scene->step();
+  const box2d::Stats all = box2d::stats();
+  return all.triangles(box2d::Backend::Box2D) - first.triangles(box2d::Backend::Box2D) +
+         all.polygon_pairs - first.polygon_pairs;
 }
 
 std::vector<b2Manifold> replay_manifolds(const ContactStream& stream, box2d::Backend backend,
@@ -257,12 +274,14 @@ std::vector<StreamResult> run_streams(const StreamOptions& options, std::ostream
   for (const std::string& scene : options.scenes) {
     const auto start = Clock::now();
     const ContactStream stream = record_stream(scene, options.steps, options.seed);
-    const double recorded = std::chrono::duration<double>(Clock::now() - start).count();
+    const std::uint64_t evaluations = world_evaluations(scene, options.steps, options.seed);
+    const double worlds = std::chrono::duration<double>(Clock::now() - start).count();
     out.push_back(measure_stream(stream, options));
+    out.back().world_evaluations = evaluations;
     const double total = std::chrono::duration<double>(Clock::now() - start).count();
     progress << "dyop bench: stream " << scene << ": " << stream.calls.size() << " calls in "
-             << options.steps << " steps (recorded in " << detail::fmt("%.1f", recorded)
-             << " s, replayed in " << detail::fmt("%.1f", total - recorded) << " s)\n";
+             << options.steps << " steps (worlds run in " << detail::fmt("%.1f", worlds)
+             << " s, replayed in " << detail::fmt("%.1f", total - worlds) << " s)\n";
   }
   return out;
 }

@@ -76,6 +76,12 @@ std::vector<std::string> stream_scenes();
 /// fewer than 2 steps.
 ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed);
 
+/// The polygon-pair evaluations the world of scene `name` makes in steps 2..`steps`, counted by
+/// the plug-in answering with `b2CollidePolygons` (`Backend::Box2D`, bit-identical to Box2D's own
+/// contact): the stream's calls plus Box2D's time-of-impact re-evaluations. Throws as
+/// `record_stream`, and `std::runtime_error` when the plug-in cannot be installed.
+std::uint64_t world_evaluations(std::string_view name, int steps, std::uint64_t seed);
+
 /// How one replay of a stream agrees with `b2CollidePolygons`, call by call. World quantities
 /// come from `b2WorldManifold` on both manifolds with the recorded transforms and skins.
 struct StreamAgreement {
@@ -109,6 +115,9 @@ struct StreamResult {
   std::uint64_t calls = 0;            ///< recorded calls
   std::uint64_t triangle_calls = 0;   ///< calls on triangle pairs
   std::uint64_t calls_with_points = 0;  ///< calls where `b2CollidePolygons` gives points
+  /// Polygon-pair evaluations the world itself made in the same steps (`world_evaluations`): the
+  /// recorded calls plus the time-of-impact re-evaluations; 0 when not counted.
+  std::uint64_t world_evaluations = 0;
   std::vector<StreamRunnerResult> runners;  ///< every backend in `all_backends` order, then box2d-own
 };
 

@@ -93,6 +93,13 @@ TEST(ContactStream, RecordedUpdatesAreCollidesShareOfPluginEvaluationsRain) {
   EXPECT_TRUE(time_of_impact) << "no time-of-impact evaluation in rain: make this test exact";
 }
 
+TEST(ContactStream, WorldEvaluationsAreTheRecordedCallsPlusTimeOfImpactOnes) {
+  EXPECT_EQ(world_evaluations("pyramid", kSteps, kSeed),
+            record_stream("pyramid", kSteps, kSeed).calls.size());
+  EXPECT_GT(world_evaluations("rain", kSteps, kSeed),
+            record_stream("rain", kSteps, kSeed).calls.size());
+}
+
 TEST(ContactStream, ReplayingBox2DBackendAgreesWithB2CollidePolygonsExactly) {
   for (const char* scene : {"rain", "mixed"}) {
     const ContactStream stream = record_stream(scene, kSteps, kSeed);
@@ -183,6 +190,9 @@ TEST(ContactStream, BadInputIsRefusedWithAMessage) {
                 .find("no Box2D world"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([] { record_stream("rain", 1, kSeed); }).find("2 steps"),
+            std::string::npos);
+  EXPECT_NE(invalid_argument_message([] { world_evaluations("no-such-scene", kSteps, kSeed); })
+                .find("unknown scene"),
             std::string::npos);
 
   ContactStream empty;
