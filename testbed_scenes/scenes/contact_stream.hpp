@@ -11,9 +11,10 @@
 /// sees them); polygon pairs with a side of more than 3 vertices are, as the plug-in receives them
 /// too (and passes them to `b2CollidePolygons`). Not in the stream: the re-evaluations of
 /// Box2D's continuous collision (`b2World::SolveTOI` updates a contact again, bodies moved to the
-/// time of impact, when a fast body meets a static one); they cannot be seen from outside `Step`
-/// without replacing Box2D's contact. A world whose bodies fall onto static ground (rain) makes
-/// a few per cent more evaluations than its stream holds.
+/// time of impact, when the step's motion would carry a dynamic body into a static or kinematic
+/// one); they cannot be seen from outside `Step` without replacing Box2D's contact. A world whose
+/// bodies fall onto static ground (rain) makes a few per cent more evaluations than its stream
+/// holds (`world_evaluations` counts them).
 ///
 /// Replaying feeds the calls, in order, to `dyop::box2d::collide_polygons` with one
 /// `ContactMemory` per recorded contact kept across the stream, as a contact keeps it in a world,
@@ -124,6 +125,7 @@ struct StreamResult {
 /// Name of the reference runner: `b2CollidePolygons` called directly.
 inline constexpr const char* box2d_own = "box2d-own";
 
+/// What `run_streams` records and how it times the replays.
 struct StreamOptions {
   std::vector<std::string> scenes = stream_scenes();  ///< recorded and replayed in this order
   /// Steps per scene. 600 (10 s): falling, landing and resting, as the catalogue's full runs;

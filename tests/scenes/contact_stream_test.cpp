@@ -65,8 +65,8 @@ void expect_recorder_matches_plugin(const std::string& scene) {
   }
 }
 
-// In these scenes nothing moves fast enough for continuous collision in the first 1.5 s, so every
-// evaluation is one of `Collide`'s.
+// In these scenes no step's motion carries a body into static ground in the first 1.5 s (no
+// continuous-collision event), so every evaluation is one of `Collide`'s.
 TEST(ContactStream, RecordedUpdatesEqualPluginEvaluationsEveryStepPyramid) {
   expect_recorder_matches_plugin("pyramid");
 }
@@ -79,9 +79,9 @@ TEST(ContactStream, RecordedUpdatesEqualPluginEvaluationsEveryStepMixed) {
   expect_recorder_matches_plugin("mixed");
 }
 
-// Falling triangles hit the static bin fast enough for Box2D's time of impact, whose re-evaluations
-// (`SolveTOI`) come on top of `Collide`'s and are not recorded: never fewer evaluations than
-// recorded, and some more once triangles land.
+// Falling triangles reach the static bin within a step's motion: Box2D's time of impact
+// re-evaluates those contacts (`SolveTOI`) on top of `Collide`'s updates, and those are not
+// recorded: never fewer evaluations than recorded, and some more once triangles land.
 TEST(ContactStream, RecordedUpdatesAreCollidesShareOfPluginEvaluationsRain) {
   const ContactStream stream = record_stream("rain", kSteps, kSeed);
   std::map<int, StepCounts> recorded = recorded_per_step(stream);
