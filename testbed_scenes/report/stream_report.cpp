@@ -92,7 +92,7 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results, const
             "set title 'Contact streams: ns per call relative to b2CollidePolygons (box2d-own = 1)'\n"
             "set style data histograms\nset style histogram clustered gap 1\n"
             "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset grid ytics\n"
-            "set key top left\nset xtics rotate by -30\nset ylabel 'ratio to box2d-own'\n"
+            "set key outside right top\nset xtics nomirror\nset ylabel 'ratio to box2d-own'\n"
             "set yrange [0:*]\nset arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2\n"
             "plot ";
   for (std::size_t k = 0; k < backends; ++k) {

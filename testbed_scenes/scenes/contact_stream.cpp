@@ -72,13 +72,17 @@ void agree(const b2Manifold& got, const b2Manifold& ref, const StreamContact& c,
   out.separation_diff_max = std::max(out.separation_diff_max, diff);
 }
 
+struct Replay {
+  std::uint64_t points = 0;  // points made, so that the work is used
+  double seconds = 0;
+};
+
 // The whole stream once, through the plug-in or (nullopt) `b2CollidePolygons`; `memory` holds
-// one entry per contact and is reset first. Returns the points made, so the work is used.
-std::uint64_t replay_once(const ContactStream& stream, std::optional<box2d::Backend> backend,
-                          const box2d::Config& config, std::vector<box2d::ContactMemory>& memory,
-                          double& seconds) {
+// one entry per contact and is reset first, untimed.
+Replay replay_once(const ContactStream& stream, std::optional<box2d::Backend> backend,
+                   const box2d::Config& config, std::vector<box2d::ContactMemory>& memory) {
   memory.assign(stream.contacts.size(), box2d::ContactMemory{});
-  std::uint64_t points = 0;
+  Replay r;
   b2Manifold m;
   const auto start = Clock::now();
   if (backend) {
@@ -86,30 +90,29 @@ std::uint64_t replay_once(const ContactStream& stream, std::optional<box2d::Back
       const StreamContact& c = stream.contacts[static_cast<std::size_t>(call.contact)];
       box2d::collide_polygons(&m, *backend, c.shape_a, call.xf_a, c.shape_b, call.xf_b,
                               &memory[static_cast<std::size_t>(call.contact)], config);
-      points += static_cast<std::uint64_t>(m.pointCount);
+      r.points += static_cast<std::uint64_t>(m.pointCount);
     }
   } else {
     for (const StreamCall& call : stream.calls) {
       const StreamContact& c = stream.contacts[static_cast<std::size_t>(call.contact)];
       b2CollidePolygons(&m, &c.shape_a, call.xf_a, &c.shape_b, call.xf_b);
-      points += static_cast<std::uint64_t>(m.pointCount);
+      r.points += static_cast<std::uint64_t>(m.pointCount);
     }
   }
-  seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return points;
+  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return r;
 }
 
-// One timed pass: the stream repeated until `min_ms`, memories reset between repetitions
-// (untimed), so that every repetition starts as the world did.
+// One timed pass, ns per call: the stream repeated until `min_pass_ms`, memories reset between
+// repetitions, so that every repetition starts as the world did.
 double timed_pass(const ContactStream& stream, std::optional<box2d::Backend> backend,
-                  const StreamOptions& options, std::vector<box2d::ContactMemory>& memory,
-                  std::uint64_t& sink) {
+                  const StreamOptions& options, std::vector<box2d::ContactMemory>& memory) {
   double total = 0;
   std::uint64_t calls = 0;
   do {
-    double s = 0;
-    sink += replay_once(stream, backend, options.config, memory, s);
-    total += s;
+    const Replay r = replay_once(stream, backend, options.config, memory);
+    replay_sink = replay_sink + r.points;
+    total += r.seconds;
     calls += stream.calls.size();
   } while (total * 1e3 < options.min_pass_ms);
   return total * 1e9 / static_cast<double>(calls);
@@ -159,23 +162,22 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
   // contact's memory for a new one, but an ending contact is erased on the pass whose step
   // destroys it, so a reused address always starts a new id.
   std::unordered_map<const b2Contact*, std::int32_t> live;
-  for (int step = 1; step <= steps; ++step) {
-    if (step > 1) {
-      for (const b2Contact* c = world->GetContactList(); c != nullptr; c = c->GetNext()) {
-        const b2PolygonShape* a = polygon(c->GetFixtureA());
-        const b2PolygonShape* b = polygon(c->GetFixtureB());
-        if (a == nullptr || b == nullptr) continue;
-        const CollideAction action = rule.action(world.get(), *c);
-        if (action == CollideAction::Destroy) {
-          live.erase(c);
-          continue;
-        }
-        auto [it, created] = live.try_emplace(c, static_cast<std::int32_t>(stream.contacts.size()));
-        if (created) stream.contacts.push_back({*a, *b, a->m_count == 3 && b->m_count == 3});
-        if (action == CollideAction::Skip) continue;
-        stream.calls.push_back({it->second, step, c->GetFixtureA()->GetBody()->GetTransform(),
-                                c->GetFixtureB()->GetBody()->GetTransform()});
+  world.step();  // step 1: its contacts are created inside Step, unseen beforehand
+  for (int step = 2; step <= steps; ++step) {
+    for (const b2Contact* c = world->GetContactList(); c != nullptr; c = c->GetNext()) {
+      const b2PolygonShape* a = polygon(c->GetFixtureA());
+      const b2PolygonShape* b = polygon(c->GetFixtureB());
+      if (a == nullptr || b == nullptr) continue;
+      const CollideAction action = rule.action(world.get(), *c);
+      if (action == CollideAction::Destroy) {
+        live.erase(c);
+        continue;
       }
+      auto [it, created] = live.try_emplace(c, static_cast<std::int32_t>(stream.contacts.size()));
+      if (created) stream.contacts.push_back({*a, *b, a->m_count == 3 && b->m_count == 3});
+      if (action == CollideAction::Skip) continue;
+      stream.calls.push_back({it->second, step, c->GetFixtureA()->GetBody()->GetTransform(),
+                              c->GetFixtureB()->GetBody()->GetTransform()});
     }
     world.step();
   }
@@ -256,14 +258,12 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
   }
 
   std::vector<box2d::ContactMemory> memory;
-  std::uint64_t sink = 0;
   for (int pass = 0; pass < options.passes; ++pass) {
     for (int k = 0; k < runners; ++k) {
-      const double ns = timed_pass(stream, backend_of(k), options, memory, sink);
+      const double ns = timed_pass(stream, backend_of(k), options, memory);
       r.runners[k].ns_per_call = std::min(r.runners[k].ns_per_call, ns);
     }
   }
-  replay_sink = replay_sink + sink;
   const double base = r.runners.back().ns_per_call;
   for (StreamRunnerResult& x : r.runners) x.ratio_vs_box2d_own = base > 0 ? x.ns_per_call / base : 0;
   return r;
