@@ -2,15 +2,20 @@
 // at least 8192 distinct seeded pairs per class (prepared outside the timed loop), so the branch
 // predictor cannot learn the set. Compare methods by their ratio to BM_box2d/<class>/manifold/float
 // in the same run: the machines are shared and noisy. Batch kernel benchmarks time a whole
-// batch per iteration; their items_per_second is pairs per second.
+// batch per iteration; their items_per_second is pairs per second. BM_stream/<scene>/<backend>
+// replays a Box2D scene's recorded contact updates, one per iteration (box2d-own: b2CollidePolygons).
 #include <benchmark/benchmark.h>
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "workloads/pair_sets.hpp"
+#ifdef DYOP_WITH_BOX2D
+#include "scenes/contact_stream.hpp"
+#endif
 
 namespace {
 
@@ -134,6 +139,60 @@ void bm_box2d(benchmark::State& state, BenchClass c) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+// A scene's recorded contact stream (every Collide update of steps 2..300, recorded once, outside
+// timing), one call per iteration with one memory per contact, as in the world. 300 steps (5 s):
+// dropped bodies have landed, so the stream holds first contacts and resting pairs alike.
+constexpr int kStreamSteps = 300;
+
+const scenes::ContactStream& stream_of(const std::string& scene) {
+  static std::map<std::string, scenes::ContactStream> streams;
+  auto it = streams.find(scene);
+  if (it == streams.end()) {
+    it = streams.emplace(scene, scenes::record_stream(scene, kStreamSteps, kSeed)).first;
+  }
+  return it->second;
+}
+
+// `backend` nullopt: `b2CollidePolygons` directly (box2d-own). Memories start over, untimed, at
+// each wrap, so every pass over the stream starts as the world did.
+void bm_stream(benchmark::State& state, const std::string& scene,
+               std::optional<box2d::Backend> backend) {
+  const scenes::ContactStream& s = stream_of(scene);
+  std::vector<box2d::ContactMemory> memory(s.contacts.size());
+  b2Manifold manifold;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const scenes::StreamCall& call = s.calls[i];
+    const scenes::StreamContact& c = s.contacts[static_cast<std::size_t>(call.contact)];
+    if (backend) {
+      box2d::collide_polygons(&manifold, *backend, c.shape_a, call.xf_a, c.shape_b, call.xf_b,
+                              &memory[static_cast<std::size_t>(call.contact)]);
+    } else {
+      b2CollidePolygons(&manifold, &c.shape_a, call.xf_a, &c.shape_b, call.xf_b);
+    }
+    benchmark::DoNotOptimize(manifold);
+    if (++i == s.calls.size()) {
+      state.PauseTiming();
+      i = 0;
+      memory.assign(memory.size(), box2d::ContactMemory{});
+      state.ResumeTiming();
+    }
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void register_streams() {
+  for (const char* scene : {"rain", "pyramid"}) {
+    const std::string head = std::string("BM_stream/") + scene + "/";
+    for (box2d::Backend b : box2d::all_backends) {
+      benchmark::RegisterBenchmark((head + box2d::name(b)).c_str(), bm_stream, scene,
+                                   std::optional<box2d::Backend>(b));
+    }
+    benchmark::RegisterBenchmark((head + scenes::box2d_own).c_str(), bm_stream, scene,
+                                 std::optional<box2d::Backend>());
+  }
+}
 #endif
 
 template <class T>
@@ -168,6 +227,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(
         (std::string("BM_box2d/") + workloads::name(c) + "/manifold/float").c_str(), bm_box2d, c);
   }
+  register_streams();
 #endif
   register_precision<float>();
   register_precision<double>();

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "report/bench_report.hpp"
 #ifdef DYOP_WITH_BOX2D
+#include "report/stream_report.hpp"
 #include "scenes/rain_scaling.hpp"
 #endif
 
@@ -18,6 +19,7 @@ namespace {
 struct BenchArgs {
   bool quick = false;
   bool no_scaling = false;
+  bool no_streams = false;
   std::string json;
   std::string out;
 };
@@ -26,6 +28,10 @@ struct BenchArgs {
 // (the tallest grid, 57 m, has just landed).
 constexpr int kScalingSteps = 600;
 constexpr int kQuickScalingSteps = 240;
+// Contact streams: 2 s of simulated time quick (dropped bodies mostly still falling, the resting
+// structures already resting) and 3 timed passes, so that the section stays under a minute.
+constexpr int kQuickStreamSteps = 120;
+constexpr int kQuickStreamPasses = 3;
 
 int run(const BenchArgs& args) {
   report::BenchOptions options;
@@ -47,6 +53,21 @@ int run(const BenchArgs& args) {
       std::error_code ec;
       std::filesystem::create_directories(args.out, ec);
       sections = scenes::write_scaling_outputs(rain, args.out, problems);
+    }
+  }
+  if (!args.no_streams) {
+    scenes::StreamOptions streams;
+    if (args.quick) {
+      streams.steps = kQuickStreamSteps;
+      streams.passes = kQuickStreamPasses;
+    }
+    const std::vector<scenes::StreamResult> results = scenes::run_streams(streams, std::cerr);
+    tables << '\n';
+    report::write_stream_table(results, tables);
+    if (!args.out.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(args.out, ec);
+      sections += report::write_stream_outputs(results, args.out, problems);
     }
   }
 #endif
@@ -81,12 +102,17 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "Run time against error of every method, with ratios to Box2D's narrow phase");
   cmd->add_flag("--quick", args->quick,
-                "Fewer timed passes (5 instead of 21) and shorter scaling runs (4 s, not 10 s)");
+                "Fewer timed passes (5 instead of 21), shorter scaling runs (4 s, not 10 s) and "
+                "contact streams (120 steps, not 600)");
   cmd->add_flag("--no-scaling", args->no_scaling,
                 "Skip the rain scene's scaling runs (100 to 3000 triangles per backend)");
+  cmd->add_flag("--no-streams", args->no_streams,
+                "Skip the contact streams (every Box2D scene's recorded narrow-phase calls, "
+                "replayed through every backend)");
   cmd->add_option("--json", args->json, "Write the records as JSON to FILE, or '-' for stdout");
   cmd->add_option("--out", args->out,
-                  "Write report.md, bench.csv, bench.json, scaling.csv and the charts here");
+                  "Write report.md, bench.csv, bench.json, scaling.csv, streams.csv and the "
+                  "charts here");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

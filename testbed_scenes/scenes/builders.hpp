@@ -2,6 +2,8 @@
 // Internal to the scenes library: the builder of each Box2D scene (one file per family) and the
 // seeded shapes they share. The catalogue (catalog.cpp) maps names to builders.
 
+#include <string_view>
+
 #include "scenes/random.hpp"
 #include "scenes/world_scene.hpp"
 
@@ -18,6 +20,10 @@ WorldBuild build_tumbler(World& world, Rng& rng);
 WorldBuild build_slivers(World& world, Rng& rng);
 WorldBuild build_slivers_far(World& world, Rng& rng);
 WorldBuild build_mixed(World& world, Rng& rng);
+
+/// The builder of the catalogue's Box2D scene `name`, or nullptr (unknown, or `paper`, which has
+/// no Box2D world). Seed its `Rng` with the scene's seed, as `make_scene` does.
+const WorldBuilder* find_builder(std::string_view name);
 
 /// A dynamic body at `position`, turned at random, holding one irregular triangle whose vertices
 /// lie 0.75 to 1 × `radius` from the body origin, at angles at least 0.5 rad apart (so no sliver).

@@ -58,6 +58,11 @@ const Entry* find_entry(std::string_view name) {
 
 }  // namespace
 
+const WorldBuilder* detail::find_builder(std::string_view name) {
+  const Entry* e = find_entry(name);
+  return e != nullptr && e->build != nullptr ? &e->build : nullptr;
+}
+
 const std::vector<SceneInfo>& scene_catalog() {
   static const std::vector<SceneInfo> infos = [] {
     std::vector<SceneInfo> out;

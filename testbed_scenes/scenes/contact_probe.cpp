@@ -42,7 +42,7 @@ std::size_t ContactProbe::PairHash::operator()(
   return a ^ (std::hash<const void*>()(p.second) + 0x9e3779b97f4a7c15ull + (a << 6) + (a >> 2));
 }
 
-ContactProbe::ContactProbe(box2d::Backend backend, const b2World& world) : backend_(backend) {
+CollideRule::CollideRule(const b2World& world) {
   const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
   ProxyCollector collector{&bp, &proxy_};
   b2AABB everything;
@@ -51,15 +51,25 @@ ContactProbe::ContactProbe(box2d::Backend backend, const b2World& world) : backe
   bp.Query(&collector, everything);
 }
 
+CollideAction CollideRule::action(const b2World& world, const b2Contact& contact) const {
+  const b2Fixture* fa = contact.GetFixtureA();
+  const b2Fixture* fb = contact.GetFixtureB();
+  if (!active(fa->GetBody()) && !active(fb->GetBody())) return CollideAction::Skip;
+  const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
+  if (!bp.TestOverlap(proxy_.at(fa), proxy_.at(fb))) return CollideAction::Destroy;
+  return CollideAction::Update;
+}
+
+ContactProbe::ContactProbe(box2d::Backend backend, const b2World& world)
+    : backend_(backend), rule_(world) {}
+
 ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally& errors) {
   ++pass_;
   Updates u;
-  const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
   for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
+    if (rule_.action(world, *c) != CollideAction::Update) continue;
     const b2Fixture* fa = c->GetFixtureA();
     const b2Fixture* fb = c->GetFixtureB();
-    if (!active(fa->GetBody()) && !active(fb->GetBody())) continue;
-    if (!bp.TestOverlap(proxy_.at(fa), proxy_.at(fb))) continue;  // Collide destroys it
     ++u.contacts;
     if (!is_triangle(fa) || !is_triangle(fb)) continue;
     ++u.triangles;

@@ -28,8 +28,31 @@
 
 class b2World;
 class b2Fixture;
+class b2Contact;
 
 namespace dyop::scenes {
+
+/// What the coming `b2World::Step` does with a contact in `b2ContactManager::Collide`.
+enum class CollideAction : std::uint8_t {
+  Skip,     ///< neither body awake and movable: the contact is left as it is
+  Destroy,  ///< the two proxies' fat AABBs no longer overlap: the contact ends
+  Update,   ///< `b2Contact::Update`, hence `Evaluate` (the narrow phase)
+};
+
+/// Box2D 2.4.1's rule in `b2ContactManager::Collide`, read from outside the step: a contact is
+/// updated when at least one of its bodies is awake and not static and the two proxies' fat AABBs
+/// still overlap (filters never change in the scenes, so the filter check never fires).
+class CollideRule {
+ public:
+  /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
+  explicit CollideRule(const b2World& world);
+
+  /// What the next step of `world` does with `contact`, one of `world`'s contacts.
+  CollideAction action(const b2World& world, const b2Contact& contact) const;
+
+ private:
+  std::unordered_map<const b2Fixture*, int> proxy_;
+};
 
 class ContactProbe {
  public:
@@ -58,7 +81,7 @@ class ContactProbe {
   };
 
   box2d::Backend backend_;
-  std::unordered_map<const b2Fixture*, int> proxy_;
+  CollideRule rule_;
   std::unordered_map<std::pair<const b2Fixture*, const b2Fixture*>, Cache, PairHash> caches_;
   std::uint64_t pass_ = 0;
 };
