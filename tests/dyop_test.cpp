@@ -56,6 +56,43 @@ TEST(Dyop, EqualsSatAtEveryLevelOnEveryClass) {
   }
 }
 
+// `Apart::Gap` asks for the proof of separation instead of the distance: the same status and,
+// for pairs apart, a separation that never exceeds the exact distance, along a unit axis, with
+// the witnesses left at their defaults; touching and penetrating pairs are answered bit for bit
+// as with the distance, manifold included.
+TEST(Dyop, GapForPairsApartIsALowerBoundOnTheDistanceAndChangesNothingElse) {
+  int apart = 0;
+  for (PairClass c : all_pair_classes) {
+    for (const RawPair& p : make_pairs(c, 300, 17)) {
+      const auto d = build<double>(p);
+      for (Level level : {Level::Depth, Level::Contact, Level::Manifold}) {
+        Query<double> q{level, 0.05 * pair_size(p), 0.01 * pair_size(p)};
+        const Result<double> distance = dyop(d.a.triangle, d.b.triangle, q);
+        q.apart = Apart::Gap;
+        for (const Result<double>& gap :
+             {dyop(d.a.triangle, d.b.triangle, q), sat(d.a.triangle, d.b.triangle, q)}) {
+          ASSERT_EQ(gap.status, distance.status);
+          if (gap.status != Status::Separated) {
+            expect_same_result(gap, distance, pair_size(p));
+            continue;
+          }
+          ++apart;
+          EXPECT_GT(gap.separation, 0.0);
+          // Equal where the closest features are a vertex and an edge; both are rounded.
+          EXPECT_LE(gap.separation,
+                    distance.separation + touching_tolerance<double>() * pair_size(p))
+              << "a lower bound";
+          EXPECT_NEAR(gap.normal.norm(), 1.0, 1e-12);
+          EXPECT_EQ(gap.witness_a, Vec2<double>::Zero());
+          EXPECT_EQ(gap.feature_a.type, Feature::Type::None);
+          EXPECT_EQ(gap.manifold.point_count, distance.manifold.point_count);
+        }
+      }
+    }
+  }
+  EXPECT_GT(apart, 100) << "the classes hold pairs apart";
+}
+
 TEST(DyopFast, FindsAVertexIntoFaceDepthLikeThePaper) {
   const auto a = tri<double>(0, 0, 4, 0, 2, 4);
   const auto b = tri<double>(2, 0.5, 1, -2, 3, -2);
