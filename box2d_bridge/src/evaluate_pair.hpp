@@ -49,6 +49,14 @@ inline float face_separation(int face, const b2PolygonShape& a, const b2PolygonS
   return least - b2Dot(m, b_in_a.p) - b2Dot(n, b.m_vertices[e]);
 }
 
+// Beyond this separation along any one face normal (metres), for skins summing to `margin`, a
+// manifold has no point: the reference face the full evaluation picks separates the pair by at
+// least that face's separation minus `face_hysteresis` (it is the best face of A or B, B's only
+// when it beats A's by the hysteresis), and every clipped point lies on the incident edge, at
+// least as far from the reference line as the nearer of its ends. So a face whose separation
+// exceeds margin + face_hysteresis proves the manifold empty, exactly.
+inline float face_reach(float margin) { return margin + face_hysteresis; }
+
 // True when the bounding circles are farther apart than `far` (compared squared: no root).
 inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
                           const b2Transform& b_in_a, const ContactMemory& memory, float far) {
@@ -76,7 +84,8 @@ inline void evaluate_pair(b2Manifold* manifold, Backend backend, const Config& c
   const std::optional<Method> method = method_of(backend);
   const bool skip_bounds = config.bounds_early_out && circles_apart(a, b, b_in_a, memory, far);
   if (skip_bounds || (config.warm_axis && method && memory.last_face >= 0 &&
-                      face_separation(memory.last_face, a, b, b_in_a) > far)) {
+                      face_separation(memory.last_face, a, b, b_in_a) >
+                          face_reach(a.m_radius + b.m_radius))) {
     manifold->pointCount = 0;
     ++count.skipped[static_cast<int>(skip_bounds ? Skip::Bounds : Skip::WarmAxis)];
     return;

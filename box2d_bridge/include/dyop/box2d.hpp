@@ -101,7 +101,8 @@ struct Config {
   /// AABBs (grown by 0.1 m) overlap, many of them apart.
   bool bounds_early_out = true;
   /// The face the pair was judged on last step is tried first: when it still separates the pair
-  /// beyond `reach`, no other work is done (DyOP's pivot choice, warm-started).
+  /// by more than the skins and `face_hysteresis`, the manifold is empty and no other work is done
+  /// (DyOP's pivot choice, warm-started).
   bool warm_axis = true;
   /// `LinCanny` starts from the features the pair ended on last step; off: every step cold.
   bool lin_canny_cache = true;
@@ -127,7 +128,7 @@ inline float reach(float margin) { return 2 * margin + face_hysteresis; }
 /// Why a triangle pair's evaluation was skipped (index of `Stats::skipped`).
 enum class Skip : std::uint8_t {
   Bounds,    ///< bounding circles apart beyond `reach` (`Config::bounds_early_out`)
-  WarmAxis,  ///< last step's face still separates beyond `reach` (`Config::warm_axis`)
+  WarmAxis,  ///< last step's face still separates beyond the skins (`Config::warm_axis`)
 };
 
 /// Number of skip reasons: the size of `Stats::skipped`.
