@@ -84,25 +84,32 @@ std::optional<box2d::Backend> parse_backend(std::string_view name) {
   return std::nullopt;
 }
 
-std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend, std::uint64_t seed,
+const char* name(const Runner& runner) { return runner ? box2d::name(*runner) : box2d_own; }
+
+std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, std::uint64_t seed,
                                   const box2d::Config& skips) {
   const Entry* e = find_entry(name);
   if (e == nullptr) throw std::invalid_argument("unknown scene '" + std::string(name) + "'");
-  if (e->build == nullptr) return paper::make_scene(backend, seed);
-  return std::make_unique<WorldScene>(e->info.name, backend, seed, skips, e->build);
+  if (e->build == nullptr) {
+    if (!runner) {
+      throw std::invalid_argument("scene 'paper' has no Box2D world to run Box2D's own contact in");
+    }
+    return paper::make_scene(*runner, seed);
+  }
+  return std::make_unique<WorldScene>(e->info.name, runner, seed, skips, e->build);
 }
 
-std::unique_ptr<Scene> make_rain(int falling, box2d::Backend backend, std::uint64_t seed,
+std::unique_ptr<Scene> make_rain(int falling, const Runner& runner, std::uint64_t seed,
                                  const box2d::Config& skips) {
   if (falling < 1) throw std::invalid_argument("rain needs at least one falling triangle");
   return std::make_unique<WorldScene>(
-      "rain", backend, seed, skips,
+      "rain", runner, seed, skips,
       [falling](World& world, Rng& rng) { return detail::build_rain_of(world, rng, falling); });
 }
 
-SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
+SceneMetrics run_scene(std::string_view name, const Runner& runner, int steps, std::uint64_t seed,
                        const box2d::Config& skips, Drawing* final_state) {
-  const std::unique_ptr<Scene> scene = make_scene(name, backend, seed, skips);
+  const std::unique_ptr<Scene> scene = make_scene(name, runner, seed, skips);
   for (int i = 0; i < steps; ++i) scene->step();
   if (final_state != nullptr) *final_state = scene->drawing();
   return scene->metrics();

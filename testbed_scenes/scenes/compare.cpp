@@ -86,6 +86,12 @@ double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off) {
 
 int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
+std::vector<box2d::Backend> in_world_backends(bool quick) {
+  if (!quick) return {std::begin(box2d::all_backends), std::end(box2d::all_backends)};
+  return {box2d::Backend::Dyop, box2d::Backend::Sat, box2d::Backend::LinCanny,
+          box2d::Backend::Box2D};
+}
+
 CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
   CompareRun run;
   run.options = options;
@@ -143,6 +149,24 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
                << (reps > 1 ? ", " + std::to_string(reps) + " times" : "") << ": "
                << fmt("%.2f", seconds_since(t)) << " s (total " << fmt("%.1f", seconds_since(start))
                << " s)\n"
+               << std::flush;
+    }
+  }
+  const int in_world_reps = in_world_repetitions(options.quick);
+  for (const SceneInfo* s : scenes) {
+    if (std::string(s->name) == "paper") continue;  // no Box2D world
+    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
+    for (box2d::Backend b : in_world_backends(options.quick)) {
+      const auto t = Clock::now();
+      run.in_world.push_back(measure_in_world(s->name, b, in_world_reps, [&](const Runner& r) {
+        return run_scene(s->name, r, steps, options.seed, options.skips);
+      }));
+      const InWorldRatio& m = run.in_world.back();
+      progress << "[in-world] " << s->name << " / " << box2d::name(b) << " against "
+               << box2d_own << ", " << in_world_reps << " times each: narrow phase "
+               << fmt("%.2f", m.narrowphase_ratio()) << "x, step " << fmt("%.2f", m.step_ratio())
+               << "x, " << fmt("%.2f", seconds_since(t)) << " s (total "
+               << fmt("%.1f", seconds_since(start)) << " s)\n"
                << std::flush;
     }
   }
@@ -316,6 +340,10 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     return 2;
   }
   write_compare_table(run, out);
+  if (!run.in_world.empty()) {
+    out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
+    write_in_world_table(run.in_world, out);
+  }
   if (!run.skips.empty()) {
     out << "\nSkipping what a scene doesn't need:\n\n";
     write_skip_tables(run, out);

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "scenes/in_world.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/paper.hpp"
 #include "scenes/svg.hpp"
@@ -30,6 +31,11 @@ struct CompareOptions {
   /// skip section.
   box2d::Config skips;
 };
+
+/// The backends of the in-world section: every backend in a full run; `--quick` keeps the two
+/// exact ones, warm Lin–Canny (the paper's baseline) and `box2d` (Box2D's code through the
+/// plug-in: what the plug-in's path itself costs).
+std::vector<box2d::Backend> in_world_backends(bool quick);
 
 /// Timed repetitions of the Figure-7 experiment (each figure is their median).
 int paper_repetitions(bool quick);
@@ -82,6 +88,8 @@ struct CompareRun {
   std::vector<SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
   /// `skip_scenes` (those selected) by `skip_backends`, in that order.
   std::vector<SkipMeasurement> skips;
+  /// Every Box2D scene selected by `in_world_backends`, against Box2D's own contact.
+  std::vector<InWorldRatio> in_world;
   std::optional<paper::Experiment> paper;                  ///< when the paper scene was run
   std::vector<std::pair<std::string, Drawing>> snapshots;  ///< per scene: `dyop`'s final state
   double seconds = 0;                                      ///< wall time of the whole run

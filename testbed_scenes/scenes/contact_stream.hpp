@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "dyop/box2d.hpp"
+#include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 
@@ -121,9 +122,6 @@ struct StreamResult {
   std::uint64_t world_evaluations = 0;
   std::vector<StreamRunnerResult> runners;  ///< every backend in `all_backends` order, then box2d-own
 };
-
-/// Name of the reference runner: `b2CollidePolygons` called directly.
-inline constexpr const char* box2d_own = "box2d-own";
 
 /// What `run_streams` records and how it times the replays.
 struct StreamOptions {

@@ -55,7 +55,7 @@ void Fnv1a::add(double v) {
 
 bool all_finite(const SceneMetrics& m) {
   const double values[] = {
-      m.step_ms_median,  m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
+      m.step_ms_median,  m.step_ms_total,        m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
       m.max_penetration, m.mean_penetration,     m.pd_error_max,
       m.pd_error_mean,   m.kinetic_energy_final, m.top_displacement.value_or(0.0)};
   return std::all_of(std::begin(values), std::end(values),

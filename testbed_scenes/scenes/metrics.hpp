@@ -20,7 +20,9 @@ namespace dyop::scenes {
 /// The figures of one scene run under one backend.
 struct SceneMetrics {
   std::string scene;       ///< scene name
-  std::string backend;     ///< backend name ("dyop", ..., "box2d")
+  /// Backend name ("dyop", ..., "box2d"), or `box2d_own` for a Box2D scene run with the plug-in
+  /// not installed (Box2D's own contact answers every pair).
+  std::string backend;
   std::uint64_t seed = 0;  ///< the seed the scene was built with
   int steps = 0;           ///< steps run
   int bodies = 0;          ///< bodies (static and kinematic ones included)
@@ -46,6 +48,9 @@ struct SceneMetrics {
   /// which they are a part (`stats().skipped`). None for `paper`.
   std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
   double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
+  /// Wall time of all the measured steps together (ms): Box2D scenes, `b2World::Step` in steps
+  /// 2..N (what a user of the world waits for); paper, the backend's calls.
+  double step_ms_total = 0;
   /// Narrow-phase time over the measured steps (ms): Box2D scenes, the sum of
   /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);
   /// paper, the time of the backend's calls.

@@ -57,6 +57,7 @@ Json to_json(const SceneMetrics& m) {
   j["skip_config"] = skip_config(m.skip_config);
   j["skips"] = skips(m.skips);
   j["step_ms_median"] = number(m.step_ms_median);
+  j["step_ms_total"] = number(m.step_ms_total);
   j["narrowphase_ms_total"] = number(m.narrowphase_ms_total);
   j["narrowphase_ns_per_pair"] = number(m.narrowphase_ns_per_pair);
   j["max_penetration"] = number(m.max_penetration);

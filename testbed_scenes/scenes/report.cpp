@@ -33,6 +33,9 @@ class Writer {
   ReportOutcome write() {
     write_file("compare.csv", [&](std::ostream& o) { compare_csv(o); });
     if (!run_.skips.empty()) write_file("skips.csv", [&](std::ostream& o) { skips_csv(o); });
+    if (!run_.in_world.empty()) {
+      write_file("inworld.csv", [&](std::ostream& o) { write_in_world_csv(run_.in_world, o); });
+    }
     if (run_.paper) {
       write_file("paper_figure7.csv", [&](std::ostream& o) { figure7_data(o, ','); });
       write_file("paper_methods.csv", [&](std::ostream& o) { paper_methods_csv(o); });
@@ -210,6 +213,7 @@ class Writer {
     scatter << '\n';
     chart("time_vs_error", scatter.str());
 
+    if (!run_.in_world.empty()) in_world_chart();
     if (!run_.paper) return;
     write_file("paper_figure7.dat", [&](std::ostream& o) { figure7_data(o, ' '); });
     std::ostringstream fig;
@@ -224,6 +228,56 @@ class Writer {
         << gp_quote(path("paper_figure7.dat"))
         << " using 1:i with linespoints lw 2 pt 7 title columnheader(i)\n";
     chart("paper_figure7", fig.str());
+  }
+
+  // Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
+  // bar per backend, narrow phase above and step below.
+  void in_world_chart() {
+    std::vector<std::string> backends;
+    for (const InWorldRatio& r : run_.in_world) {
+      if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) {
+        backends.push_back(r.backend);
+      }
+    }
+    auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
+      for (const InWorldRatio& r : run_.in_world) {
+        if (r.scene == scene && r.backend == backend) {
+          return fmt("%.6g", step ? r.step_ratio() : r.narrowphase_ratio());
+        }
+      }
+      return std::string("NaN");
+    };
+    for (const bool step : {false, true}) {
+      write_file(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
+        o << "scene";
+        for (const std::string& b : backends) o << ' ' << b;
+        o << '\n';
+        for (const std::string& s : scene_names()) {
+          if (s == "paper") continue;
+          o << s;
+          for (const std::string& b : backends) o << ' ' << ratio(s, b, step);
+          o << '\n';
+        }
+      });
+    }
+    std::ostringstream bars;
+    bars << "set terminal svg size 1000,760 dynamic font 'sans,11' background '#ffffff'\n"
+         << "set output " << gp_quote(path("inworld.svg")) << "\n"
+         << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
+            "Box2D''s own contact (below 1: the plug-in is faster)'\n"
+         << "set style data histograms\nset style histogram clustered gap 1\n"
+         << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
+         << "set xtics rotate by -25\nset key outside right top\n"
+         << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
+    for (const bool step : {false, true}) {
+      bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
+           << "'\nset ylabel '× " << box2d_own << "'\n"
+           << "plot for [i=2:" << backends.size() + 1 << "] "
+           << gp_quote(path(step ? "inworld_step.dat" : "inworld_collide.dat"))
+           << " using i:xtic(1) title columnheader(i)\n";
+    }
+    bars << "unset multiplot\n";
+    chart("inworld", bars.str());
   }
 
   bool has_chart(const std::string& file) const {
@@ -279,6 +333,7 @@ class Writer {
     o << '\n';
     image(o, "time_per_method.svg", "narrow-phase time per pair, by scene and backend");
     image(o, "time_vs_error.svg", "time against largest depth error");
+    if (!run_.in_world.empty()) in_world_section(o);
     if (!run_.skips.empty()) skips_section(o);
 
     o << "## Scenes\n\n| scene | what | steps | bodies | triangle fixtures | final state (dyop) |\n"
@@ -303,6 +358,27 @@ class Writer {
               : "`skips.csv` (every run of the skip section against its `none` run), ")
       << (run_.paper ? "`paper_figure7.csv`, `paper_methods.csv`, " : "")
       << "the charts' gnuplot scripts (`*.gp`) and data (`*.dat`), `scene_*.svg`.\n";
+  }
+
+  void in_world_section(std::ostream& o) const {
+    o << "## In the world, against Box2D's own contact\n\n"
+      << "What a user who installs the plug-in feels: each Box2D scene runs under Box2D's own "
+         "contact with the plug-in **not installed** (`"
+      << box2d_own << "`) and under the backend, alternately (own, backend, own, backend, ...; "
+      << in_world_repetitions(run_.options.quick)
+      << " runs of each) in this process, same seed and steps as the table above. Each side's "
+         "figure is the median over its runs of the narrow phase (`b2Profile::collide`, summed "
+         "over steps 2..N) and of the whole step (`b2World::Step`'s wall time, summed over the "
+         "same steps: the solver and the time-of-impact pass included). **× own** is the "
+         "backend's figure over Box2D's own: below 1 the plug-in is faster. The worlds evolve "
+         "alike but not bit for bit (`box2d` excepted), so each side's contact updates are "
+         "given. Machine: "
+      << std::thread::hardware_concurrency()
+      << " hardware threads; ratios move between machines of one kind, name the machine with "
+         "them.\n\n";
+    write_in_world_table(run_.in_world, o);
+    o << '\n';
+    image(o, "inworld.svg", "narrow-phase and step time against Box2D's own contact");
   }
 
   void skips_section(std::ostream& o) const {

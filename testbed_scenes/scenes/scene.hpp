@@ -54,10 +54,21 @@ const SceneInfo* find_scene(std::string_view name);
 /// The backend spelt `name` ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or nothing.
 std::optional<box2d::Backend> parse_backend(std::string_view name);
 
-/// Creates scene `name` for `backend` and `seed`, with the skips `skips` (Box2D scenes). Throws
-/// `std::invalid_argument` for an unknown name and `std::runtime_error` when the plug-in refuses
-/// the backend (another scene alive).
-std::unique_ptr<Scene> make_scene(std::string_view name, box2d::Backend backend, std::uint64_t seed,
+/// The name of Box2D's own contact with the plug-in not installed, the reference of every
+/// in-world ratio: in tables, CSV and JSON wherever a backend name stands.
+inline constexpr const char* box2d_own = "box2d-own";
+
+/// What answers a Box2D scene's polygon pairs: a backend of the plug-in, or nothing: Box2D's own
+/// contact, the plug-in not installed (`box2d_own`).
+using Runner = std::optional<box2d::Backend>;
+
+/// `box2d::name(*runner)`, or `box2d_own`.
+const char* name(const Runner& runner);
+
+/// Creates scene `name` for `runner` and `seed`, with the skips `skips` (Box2D scenes; ignored by
+/// Box2D's own contact). Throws `std::invalid_argument` for an unknown name, and for the `paper`
+/// scene (no Box2D world) with Box2D's own contact.
+std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, std::uint64_t seed,
                                   const box2d::Config& skips = box2d::Config::all());
 
 /// Falling triangles in the catalogue's `rain`.
@@ -66,12 +77,12 @@ inline constexpr int rain_triangles = 500;
 /// `rain` with `falling` triangles (≥ 1) instead of `rain_triangles`, for scaling runs: the same
 /// 1 m grid with at least 22 columns and about as many columns as rows, in a bin as wide. Throws
 /// as `make_scene`, and `std::invalid_argument` for `falling` < 1.
-std::unique_ptr<Scene> make_rain(int falling, box2d::Backend backend, std::uint64_t seed,
+std::unique_ptr<Scene> make_rain(int falling, const Runner& runner, std::uint64_t seed,
                                  const box2d::Config& skips = box2d::Config::all());
 
 /// Creates, runs `steps` steps, and returns the figures (and the final state when `final_state`
 /// is given).
-SceneMetrics run_scene(std::string_view name, box2d::Backend backend, int steps, std::uint64_t seed,
+SceneMetrics run_scene(std::string_view name, const Runner& runner, int steps, std::uint64_t seed,
                        const box2d::Config& skips = box2d::Config::all(),
                        Drawing* final_state = nullptr);
 

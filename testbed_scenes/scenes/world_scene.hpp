@@ -40,9 +40,10 @@ using WorldBuilder = std::function<WorldBuild(World& world, Rng& rng)>;
 /// A Box2D scene.
 class WorldScene : public Scene {
  public:
-  /// Installs `backend` with the skips `skips` in the plug-in (throws `std::runtime_error` if
-  /// refused), then builds.
-  WorldScene(std::string name, box2d::Backend backend, std::uint64_t seed,
+  /// Installs `runner`'s backend with the skips `skips` in the plug-in (throws
+  /// `std::runtime_error` if refused), or uninstalls the plug-in for Box2D's own contact, then
+  /// builds.
+  WorldScene(std::string name, const Runner& runner, std::uint64_t seed,
              const box2d::Config& skips, const WorldBuilder& build);
   ~WorldScene() override;
 
@@ -54,17 +55,17 @@ class WorldScene : public Scene {
   const World& world() const { return *world_; }
 
  private:
-  // Uninstalls the backend when the scene goes, also when building it threw: declared before the
-  // world so that it outlives it (the world's contacts must be gone before uninstalling).
+  // Uninstalls the backend when the scene goes, also when building it threw, so that the next
+  // world starts with Box2D's own contact registered.
   struct Installation {
-    Installation(box2d::Backend backend, const box2d::Config& skips);
+    Installation(const Runner& runner, const box2d::Config& skips);
     ~Installation();
     Installation(const Installation&) = delete;
     Installation& operator=(const Installation&) = delete;
   };
 
   std::string name_;
-  box2d::Backend backend_;
+  Runner runner_;
   std::uint64_t seed_;
   box2d::Config skips_;
   Installation installation_;
@@ -75,6 +76,7 @@ class WorldScene : public Scene {
 
   int steps_ = 0;
   std::vector<double> step_ms_;
+  double step_ms_measured_ = 0;  // steps 2..N, as `collide_ms_`
   double collide_ms_ = 0;
   ContactProbe::Updates updates_;
   ErrorTally errors_;
