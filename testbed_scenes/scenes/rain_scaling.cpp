@@ -1,5 +1,6 @@
 #include "scenes/rain_scaling.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "report/gnuplot.hpp"
 #include "scenes/format.hpp"
+#include "scenes/in_world.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -17,10 +19,13 @@ namespace {
 
 using detail::fmt;
 
-ScalingRecord measure(box2d::Backend backend, int falling, const ScalingOptions& options) {
-  const std::unique_ptr<Scene> scene = make_rain(falling, backend, options.seed);
+SceneMetrics run_rain(const Runner& runner, int falling, const ScalingOptions& options) {
+  const std::unique_ptr<Scene> scene = make_rain(falling, runner, options.seed);
   for (int i = 0; i < options.steps; ++i) scene->step();
-  const SceneMetrics m = scene->metrics();
+  return scene->metrics();
+}
+
+ScalingRecord record_of(const SceneMetrics& m, int falling) {
   ScalingRecord r;
   r.backend = m.backend;
   r.falling = falling;
@@ -47,15 +52,33 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
   }
   std::vector<ScalingRecord> records;
   for (int n : options.sizes) {
+    std::vector<SceneMetrics> own_runs;
     for (box2d::Backend b : box2d::all_backends) {
       const auto start = std::chrono::steady_clock::now();
-      records.push_back(measure(b, n, options));
+      SceneMetrics backend_run;
+      const InWorldRatio pair = measure_in_world(
+          "rain-" + std::to_string(n), b, 1, [&](const Runner& runner) {
+            SceneMetrics m = run_rain(runner, n, options);
+            (runner ? backend_run : own_runs.emplace_back()) = m;
+            return m;
+          });
+      records.push_back(record_of(backend_run, n));
+      records.back().ratio_vs_own = pair.narrowphase_ratio();
+      records.back().step_ratio_vs_own = pair.step_ratio();
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       progress << "dyop bench: rain " << n << " triangles, " << box2d::name(b) << ": "
-               << fmt("%.2f", records.back().narrowphase_ms_per_step) << " ms narrow phase per step ("
-               << fmt("%.1f", s) << " s)\n";
+               << fmt("%.2f", records.back().narrowphase_ms_per_step)
+               << " ms narrow phase per step, " << fmt("%.2f", pair.narrowphase_ratio())
+               << "x Box2D's own (step " << fmt("%.2f", pair.step_ratio()) << "x; "
+               << fmt("%.1f", s) << " s with the own run)\n";
     }
+    // Box2D's own contact at this size: the run of median narrow-phase time.
+    std::sort(own_runs.begin(), own_runs.end(), [](const SceneMetrics& x, const SceneMetrics& y) {
+      return x.narrowphase_ms_total < y.narrowphase_ms_total;
+    });
+    records.push_back(record_of(own_runs[own_runs.size() / 2], n));
+    records.back().ratio_vs_own = records.back().step_ratio_vs_own = 1;
   }
   std::map<int, double> box2d_ms;
   for (const ScalingRecord& r : records) {
@@ -70,16 +93,17 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
 
 void write_scaling_table(const std::vector<ScalingRecord>& records, std::ostream& out) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-10s %7s %9s %10s %10s %10s %10s %8s %10s %5s\n", "backend",
-                "falling", "triangles", "step_ms", "np_ms", "np_ns/pair", "pairs/step",
-                "xbox2d", "pd_err_max", "fallb");
+  std::snprintf(line, sizeof line, "%-10s %7s %9s %10s %10s %10s %10s %8s %8s %8s %10s %5s\n",
+                "backend", "falling", "triangles", "step_ms", "np_ms", "np_ns/pair", "pairs/step",
+                "xbox2d", "np_xown", "step_xown", "pd_err_max", "fallb");
   out << line;
   for (const ScalingRecord& r : records) {
     std::snprintf(line, sizeof line,
-                  "%-10s %7d %9d %10.3f %10.3f %10.1f %10.0f %8.3f %10.2e %5llu%s\n",
+                  "%-10s %7d %9d %10.3f %10.3f %10.1f %10.0f %8.3f %8.3f %8.3f %10.2e %5llu%s\n",
                   r.backend.c_str(), r.falling, r.triangles, r.step_ms_median,
                   r.narrowphase_ms_per_step, r.narrowphase_ns_per_pair, r.pairs_per_step,
-                  r.ratio_vs_box2d, r.pd_error_max, static_cast<unsigned long long>(r.fallbacks),
+                  r.ratio_vs_box2d, r.ratio_vs_own, r.step_ratio_vs_own, r.pd_error_max,
+                  static_cast<unsigned long long>(r.fallbacks),
                   r.nan_detected ? " NaN" : "");
     out << line;
   }
@@ -87,13 +111,14 @@ void write_scaling_table(const std::vector<ScalingRecord>& records, std::ostream
 
 void write_scaling_csv(const std::vector<ScalingRecord>& records, std::ostream& out) {
   out << "backend,falling,triangles,steps,step_ms_median,narrowphase_ms_per_step,"
-         "narrowphase_ns_per_pair,pairs_per_step,ratio_vs_box2d,pd_error_max,fallbacks,"
-         "nan_detected\n";
+         "narrowphase_ns_per_pair,pairs_per_step,ratio_vs_box2d,ratio_vs_own,step_ratio_vs_own,"
+         "pd_error_max,fallbacks,nan_detected\n";
   for (const ScalingRecord& r : records) {
     out << r.backend << ',' << r.falling << ',' << r.triangles << ',' << r.steps << ','
         << fmt("%.6g", r.step_ms_median) << ',' << fmt("%.6g", r.narrowphase_ms_per_step) << ','
         << fmt("%.6g", r.narrowphase_ns_per_pair) << ',' << fmt("%.6g", r.pairs_per_step) << ','
-        << fmt("%.6g", r.ratio_vs_box2d) << ',' << fmt("%.6g", r.pd_error_max) << ','
+        << fmt("%.6g", r.ratio_vs_box2d) << ',' << fmt("%.6g", r.ratio_vs_own) << ','
+        << fmt("%.6g", r.step_ratio_vs_own) << ',' << fmt("%.6g", r.pd_error_max) << ','
         << r.fallbacks << ',' << (r.nan_detected ? 1 : 0) << '\n';
   }
 }
@@ -150,16 +175,21 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
         "triangle fixtures, every backend, "
      << (records.empty() ? 0 : records.front().steps)
      << " steps of 1/60 s. Narrow phase: Box2D's `collide` time (every contact update, Box2D's "
-        "own per-contact work included), per step; `× box2d` compares it with Box2D's own "
-        "polygon collision at the same size.\n\n![rain scaling](rain_scaling.svg)\n\n"
+        "own per-contact work included), per step; `× box2d` compares it with `b2CollidePolygons` "
+        "through the plug-in at the same size. `× own` compares the narrow phase and the whole "
+        "step (`b2World::Step`, summed over steps 2..N) with a run of Box2D's own contact, the "
+        "plug-in not installed (`box2d-own`), made just before the backend's in the same "
+        "process.\n\n![rain scaling](rain_scaling.svg)\n\n"
         "| backend | falling | triangles | step ms (median) | narrow phase ms/step | ns per pair | "
-        "pairs per step | × box2d | depth error max (m) | fallbacks |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
+        "pairs per step | × box2d | narrow phase × own | step × own | depth error max (m) | "
+        "fallbacks |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const ScalingRecord& r : records) {
     md << "| " << r.backend << " | " << r.falling << " | " << r.triangles << " | "
        << fmt("%.3f", r.step_ms_median) << " | " << fmt("%.3f", r.narrowphase_ms_per_step)
        << " | " << fmt("%.1f", r.narrowphase_ns_per_pair) << " | "
        << fmt("%.0f", r.pairs_per_step) << " | " << fmt("%.3f", r.ratio_vs_box2d) << " | "
+       << fmt("%.3f", r.ratio_vs_own) << " | " << fmt("%.3f", r.step_ratio_vs_own) << " | "
        << detail::metres(r.pd_error_max) << " | " << r.fallbacks
        << (r.nan_detected ? " (NaN)" : "") << " |\n";
   }

@@ -6,7 +6,11 @@
 ///
 /// Times come from the scenes' own measurements (`SceneMetrics`): the median wall time of a step
 /// and Box2D's `GetProfile().collide` (contact updates), both over steps 2..N. Each size is run
-/// once per backend with the same seed, so every backend meets the same falling triangles.
+/// once per backend with the same seed, so every backend meets the same falling triangles, and
+/// each backend's run is preceded by a run of Box2D's own contact with the plug-in not installed
+/// (`box2d-own`, `scenes/in_world.hpp`): the backend's `ratio_vs_own` and `step_ratio_vs_own`
+/// come from that pair of runs, alternating in one process. One `box2d-own` record per size
+/// carries the median of its runs.
 
 #include <cstdint>
 #include <iosfwd>
@@ -25,7 +29,7 @@ struct ScalingOptions {
 
 /// One run: a backend on `rain` with `falling` triangles.
 struct ScalingRecord {
-  std::string backend;          ///< "dyop", ..., "box2d"
+  std::string backend;          ///< "dyop", ..., "box2d", or "box2d-own" (plug-in not installed)
   int falling = 0;              ///< falling triangles
   int triangles = 0;            ///< every triangle fixture, the bin's included
   int steps = 0;                ///< steps run
@@ -34,12 +38,18 @@ struct ScalingRecord {
   double narrowphase_ns_per_pair = 0;  ///< the same per contact update (ns)
   double pairs_per_step = 0;    ///< triangle contact updates per measured step
   double ratio_vs_box2d = 0;    ///< narrowphase_ms_per_step / box2d's at the same size
+  /// Narrow-phase time (`b2Profile::collide`, steps 2..N) over that of the Box2D's-own run just
+  /// before it, same size (1 for box2d-own).
+  double ratio_vs_own = 0;
+  /// Whole-step time (`b2World::Step`, steps 2..N) over that of the same Box2D's-own run.
+  double step_ratio_vs_own = 0;
   double pd_error_max = 0;      ///< largest |depth − exact depth| of an evaluated pair (m)
   std::uint64_t fallbacks = 0;  ///< pairs the backend left to Box2D (0 expected)
   bool nan_detected = false;    ///< a non-finite state or figure
 };
 
-/// Runs every backend at every size; one progress line per run on `progress`. Throws
+/// Runs every backend at every size, each after a run of Box2D's own contact; one progress line
+/// per backend on `progress`. Throws
 /// `std::invalid_argument` for a size below 1 or steps below 2.
 std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options, std::ostream& progress);
 

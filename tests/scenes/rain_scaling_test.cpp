@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -42,13 +43,14 @@ TEST(RainScene, HoldsTheFallingTrianglesAskedForPlusItsBin) {
   EXPECT_THROW(make_rain(0, box2d::Backend::Sat, 3), std::invalid_argument);
 }
 
-TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2d) {
+TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2dAndToBox2DsOwnContact) {
   ScalingOptions options;
   options.sizes = {30, 60};
   options.steps = 90;  // 1.5 s: the first rows have landed
   std::ostringstream progress;
   const std::vector<ScalingRecord> records = run_rain_scaling(options, progress);
-  ASSERT_EQ(records.size(), 2 * std::size(box2d::all_backends));
+  // Every backend, and Box2D's own contact (the plug-in not installed), at each size.
+  ASSERT_EQ(records.size(), 2 * (std::size(box2d::all_backends) + 1));
   for (const ScalingRecord& r : records) {
     SCOPED_TRACE(r.backend + " " + std::to_string(r.falling));
     EXPECT_EQ(r.steps, options.steps);
@@ -62,7 +64,18 @@ TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2d) {
     } else {
       EXPECT_GT(r.ratio_vs_box2d, 0);
     }
+    if (r.backend == box2d_own) {
+      EXPECT_EQ(r.ratio_vs_own, 1.0);
+      EXPECT_EQ(r.step_ratio_vs_own, 1.0);
+    } else {
+      EXPECT_TRUE(std::isfinite(r.ratio_vs_own) && r.ratio_vs_own > 0) << r.ratio_vs_own;
+      EXPECT_TRUE(std::isfinite(r.step_ratio_vs_own) && r.step_ratio_vs_own > 0);
+    }
   }
+  EXPECT_EQ(std::count_if(records.begin(), records.end(),
+                          [](const ScalingRecord& r) { return r.backend == box2d_own; }),
+            2)
+      << "one record of Box2D's own contact per size";
   EXPECT_NE(progress.str().find("rain 60 triangles, epa"), std::string::npos);
 
   const std::string dir = ::testing::TempDir() + "rain_scaling_test";

@@ -1,0 +1,90 @@
+// Box2D scenes under Box2D's own contact (the plug-in not installed) and the in-world comparison
+// built on them: the reference every in-world ratio is taken against.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "dyop/box2d.hpp"
+#include "scenes/compare.hpp"
+#include "scenes/in_world.hpp"
+#include "scenes/scene.hpp"
+
+namespace dyop::scenes {
+namespace {
+
+TEST(OwnContact, GivesTheWorldOfBox2DsCodeThroughThePlugIn) {
+  // `box2d` answers with b2CollidePolygons through the plug-in, bit for bit Box2D's own contact.
+  for (const char* scene : {"pyramid", "mixed", "stack-concave"}) {
+    const SceneMetrics own = run_scene(scene, std::nullopt, 120, 3);
+    const SceneMetrics through = run_scene(scene, box2d::Backend::Box2D, 120, 3);
+    EXPECT_EQ(own.hash, through.hash) << scene;
+    EXPECT_EQ(own.contact_updates, through.contact_updates) << scene;
+    EXPECT_EQ(own.backend, box2d_own);
+  }
+}
+
+TEST(OwnContact, LeavesThePlugInUninstalledAndReportsNoPlugInCounters) {
+  ASSERT_TRUE(box2d::install(box2d::Backend::Dyop).ok());
+  const SceneMetrics own = run_scene("rain", std::nullopt, 30, 0);
+  EXPECT_FALSE(box2d::installed().has_value());
+  EXPECT_FALSE(own.plugin_evaluations.has_value()) << "the plug-in evaluated nothing";
+  EXPECT_FALSE(own.fallbacks.has_value());
+  EXPECT_FALSE(own.skips.has_value());
+  EXPECT_FALSE(own.skip_config.has_value());
+  EXPECT_GT(own.contact_updates, 0u);
+  EXPECT_GT(own.step_ms_total, 0.0);
+  EXPECT_GE(own.step_ms_total, own.narrowphase_ms_total) << "the step contains the narrow phase";
+}
+
+TEST(OwnContact, HasNoPaperScene) {
+  EXPECT_THROW(make_scene("paper", std::nullopt, 0), std::invalid_argument);
+}
+
+TEST(InWorld, AlternatesOwnAndBackendAndGivesFinitePositiveRatios) {
+  std::string order;
+  const InWorldRatio r = measure_in_world("stack", box2d::Backend::Sat, 2, [&](const Runner& x) {
+    order += x ? "b" : "o";
+    return run_scene("stack", x, 60, 0);
+  });
+  EXPECT_EQ(order, "obob");
+  EXPECT_EQ(r.backend, "sat");
+  EXPECT_EQ(r.repetitions, 2);
+  EXPECT_EQ(r.steps, 60);
+  for (double ratio : {r.narrowphase_ratio(), r.step_ratio()}) {
+    EXPECT_TRUE(std::isfinite(ratio) && ratio > 0) << ratio;
+  }
+  EXPECT_THROW(measure_in_world("stack", box2d::Backend::Sat, 0, [](const Runner&) {
+                 return SceneMetrics{};
+               }),
+               std::invalid_argument);
+}
+
+TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
+  CompareOptions options;
+  options.quick = true;
+  options.steps = 90;  // every stack has landed: contacts on both sides
+  options.scenes = {"paper", "stack", "mixed"};
+  std::ostringstream progress;
+  const CompareRun run = run_compare(options, progress);
+  const std::vector<box2d::Backend> backends = in_world_backends(true);
+  ASSERT_EQ(run.in_world.size(), 2 * backends.size()) << "no row for paper (no Box2D world)";
+  for (const InWorldRatio& r : run.in_world) {
+    EXPECT_TRUE(r.scene == "stack" || r.scene == "mixed") << r.scene;
+    EXPECT_GT(r.own.narrowphase_ms, 0);
+    EXPECT_GT(r.plugin.step_ms, 0);
+  }
+  std::ostringstream table, csv;
+  write_in_world_table(run.in_world, table);
+  write_in_world_csv(run.in_world, csv);
+  EXPECT_NE(table.str().find("| mixed | dyop |"), std::string::npos) << table.str();
+  const std::string text = csv.str();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
+            static_cast<long>(run.in_world.size()) + 1);
+  EXPECT_EQ(text.rfind("scene,backend,steps,repetitions,narrowphase_ms_own", 0), 0u);
+}
+
+}  // namespace
+}  // namespace dyop::scenes
