@@ -20,11 +20,13 @@ void add_scene_command(CLI::App& app, int& exit_code) {
     list += std::string("\n  ") + s.name + ": " + s.description;
   }
   for (box2d::Backend b : box2d::all_backends) backends.push_back(box2d::name(b));
+  backends.push_back(scenes::box2d_own);
   CLI::App* cmd = app.add_subcommand(
       "scene", "Run one headless scene under one narrow phase and measure it. Scenes:" + list);
   cmd->add_option("name", args->scene, "Scene")->required()->check(CLI::IsMember(names));
   cmd->add_option("--backend,-b", args->backend,
-                  "Narrow phase for triangle pairs (box2d: Box2D's own b2CollidePolygons)")
+                  "Narrow phase for triangle pairs (box2d: Box2D's b2CollidePolygons through the "
+                  "plug-in; box2d-own: the plug-in not installed)")
       ->required()
       ->check(CLI::IsMember(backends));
   CLI::Option* steps_option =

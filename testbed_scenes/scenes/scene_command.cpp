@@ -32,7 +32,8 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
     }
     out << '\n';
   } else {
-    out << "  skips: none apply (no Box2D world)\n";
+    out << (m.backend == box2d_own ? "  skips: none apply (the plug-in is not installed)\n"
+                                   : "  skips: none apply (no Box2D world)\n");
   }
   out.precision(precision);
   out.flags(flags);
@@ -41,9 +42,14 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
 int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& err) {
   const SceneInfo* info = find_scene(c.scene);
   const std::optional<box2d::Backend> backend = parse_backend(c.backend);
-  if (info == nullptr || !backend) {
+  const bool own = c.backend == box2d_own;
+  if (info == nullptr || !(backend || own)) {
     err << "dyop scene: unknown "
         << (info == nullptr ? "scene '" + c.scene + "'" : "backend '" + c.backend + "'") << '\n';
+    return 1;
+  }
+  if (own && std::string(info->name) == "paper") {
+    err << "dyop scene: paper has no Box2D world: " << box2d_own << " runs only Box2D scenes\n";
     return 1;
   }
   const ParsedSkips skips = parse_skips(c.skip);
@@ -73,7 +79,8 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   SceneMetrics m;
   Drawing final_state;
   try {
-    m = run_scene(c.scene, *backend, c.steps.value_or(info->default_steps), c.seed, skips.config,
+    m = run_scene(c.scene, own ? Runner() : Runner(backend), c.steps.value_or(info->default_steps),
+                  c.seed, skips.config,
                   c.svg.empty() ? nullptr : &final_state);
   } catch (const std::exception& e) {
     err << "dyop scene: " << c.scene << " / " << c.backend << " could not run: " << e.what()

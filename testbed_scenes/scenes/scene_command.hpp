@@ -16,7 +16,9 @@ namespace dyop::scenes {
 
 struct SceneCommand {
   std::string scene;         ///< a name of `scene_catalog()`
-  std::string backend;       ///< "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"
+  /// "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d", or "box2d-own" (Box2D scenes: the
+  /// plug-in not installed)
+  std::string backend;
   std::optional<int> steps;  ///< none: the scene's default
   std::uint64_t seed = 0;
   std::string skip = "all";  ///< a `parse_skips` argument; the `paper` scene ignores it

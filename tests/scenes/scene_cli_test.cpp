@@ -75,6 +75,18 @@ TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
   }
 }
 
+TEST(SceneCli, Box2DsOwnContactRunsBox2DScenesWithoutPlugInCounters) {
+  const Outcome own = run("scene stack --backend box2d-own --steps 30 --json -");
+  ASSERT_EQ(own.status, 0) << own.err;
+  const nlohmann::json j = nlohmann::json::parse(own.out);
+  EXPECT_EQ(j["backend"], "box2d-own");
+  EXPECT_TRUE(j["plugin_evaluations"].is_null());
+  EXPECT_TRUE(j["skips"].is_null());
+  const Outcome paper = run("scene paper --backend box2d-own --steps 2");
+  EXPECT_EQ(paper.status, 1) << "no Box2D world to leave the plug-in out of";
+  EXPECT_NE(paper.err.find("paper"), std::string::npos) << paper.err;
+}
+
 TEST(SceneCli, UnwritableOutputIsAnIoError) {
   // A regular file where a directory should be: unwritable even for root.
   const auto dir = temp_dir("unwritable");
