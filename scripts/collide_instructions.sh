@@ -17,8 +17,9 @@ scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(pyramid stack-concave rain tumbler)
 backends=(${BACKENDS:-dyop})
 out=$(mktemp -d)
-inclusive() {  # file function-pattern -> instructions
-  callgrind_annotate --inclusive=yes "$1" 2>/dev/null | grep -m1 -E "$2" | awk '{gsub(",", "", $1); print $1}'
+inclusive() {  # file function-pattern -> instructions (reads all: no SIGPIPE under pipefail)
+  callgrind_annotate --inclusive=yes "$1" 2>/dev/null |
+    awk -v pattern="$2" '!found && $0 ~ pattern { gsub(",", "", $1); print $1; found = 1 }'
 }
 printf '%-14s %-10s %14s %8s %14s %8s\n' scene backend collide_Ir x_own step_Ir x_own
 for scene in "${scenes[@]}"; do
