@@ -1,6 +1,5 @@
 #include "scenes/in_world.hpp"
 
-#include <algorithm>
 #include <ostream>
 #include <stdexcept>
 
@@ -10,12 +9,6 @@ namespace dyop::scenes {
 namespace {
 
 using detail::fmt;
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The medians of one side's runs.
 InWorldSide side_of(const std::vector<SceneMetrics>& runs) {

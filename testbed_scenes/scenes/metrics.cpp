@@ -62,6 +62,14 @@ bool all_finite(const SceneMetrics& m) {
                      [](double v) { return std::isfinite(v); });
 }
 
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
 void add_accuracy(const ErrorTally& errors, const PenetrationTally& penetration, SceneMetrics& m) {
   m.max_penetration = penetration.max();
   m.mean_penetration = penetration.mean();

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dyop/box2d.hpp"
 #include "dyop/result.hpp"
@@ -131,5 +132,8 @@ class Fnv1a {
 
 /// True when every floating-point figure of `m` is finite.
 bool all_finite(const SceneMetrics& m);
+
+/// The median of `v` (the mean of the two middle values for an even count); 0 when empty.
+double median(std::vector<double> v);
 
 }  // namespace dyop::scenes

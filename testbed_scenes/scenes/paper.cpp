@@ -119,13 +119,6 @@ double time_jobs(const std::vector<Job>& jobs, Fn fn, std::vector<LinCannyCache>
   return std::chrono::duration<double, std::micro>(t1 - t0).count();
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The exact signed separation of a pair, on the float vertices the methods were given.
 workloads::ExactAnswer exact_of(const Triangle<float>& a, const Triangle<float>& b) {
   workloads::RawPair p;

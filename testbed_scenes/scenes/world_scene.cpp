@@ -15,14 +15,6 @@ bool finite_state(const b2Body* b) {
          finite(b->GetLinearVelocity()) && std::isfinite(b->GetAngularVelocity());
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
-}
-
 // A body-frame point in world coordinates, in double: exact enough 10 km from the origin.
 Vec2<double> world_point(const b2Transform& xf, const b2Vec2& v) {
   const double c = xf.q.c, s = xf.q.s;
