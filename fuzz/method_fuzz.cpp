@@ -150,6 +150,19 @@ void run(const FuzzInput& in) {
             "dyop and sat disagree on separation", in);
     if (std::abs(s.separation) > 2 * band) require(r.status == s.status, "dyop and sat disagree on status", in);
   }
+  if (*m == Method::Dyop || *m == Method::Sat) {
+    // Asking for the proof of separation instead of the distance changes no status, and the
+    // gap it reports is a lower bound on the distance.
+    Query<T> gap{Level::Depth};
+    gap.apart = Apart::Gap;
+    const Result<T> g = penetrate(*m, a.triangle, b.triangle, gap);
+    require(g.status == r.status, "Apart::Gap changes the status", in);
+    require(finite_at(g, Level::Depth), "NaN or inf with Apart::Gap", in);
+    if (g.status == Status::Separated) {
+      require(double(g.separation) <= double(r.separation) + agreement<T>(in),
+              "the gap of Apart::Gap exceeds the distance", in);
+    }
+  }
 }
 
 }  // namespace

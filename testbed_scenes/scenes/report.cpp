@@ -267,7 +267,7 @@ class Writer {
             "Box2D''s own contact (below 1: the plug-in is faster)'\n"
          << "set style data histograms\nset style histogram clustered gap 1\n"
          << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
-         << "set xtics rotate by -25\nset key outside right top\n"
+         << "set xtics nomirror font ',9'\nset key outside right top\n"
          << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
     for (const bool step : {false, true}) {
       bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")

@@ -125,7 +125,8 @@ TEST(SkipArgument, AnUnknownOrEmptyNameIsAnErrorNamingIt) {
   EXPECT_FALSE(bad.ok());
   EXPECT_NE(bad.error.find("'nope'"), std::string::npos) << bad.error;
   EXPECT_NE(bad.error.find("warm-axis"), std::string::npos) << "lists the names: " << bad.error;
-  for (const char* text : {"", "bounds,", ",bounds", "all,bounds", "Bounds", "bounds ,warm-axis", "unmoved"}) {
+  for (const char* text :
+       {"", "bounds,", ",bounds", "all,bounds", "Bounds", "bounds ,warm-axis", "unmoved"}) {
     EXPECT_FALSE(parse_skips(text).ok()) << '"' << text << '"';
   }
 }
