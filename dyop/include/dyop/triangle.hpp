@@ -131,15 +131,13 @@ inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw
                                               const std::array<Vec2<T>, 3>& normals, T c, T s,
                                               const Vec2<T>& translation) {
   // Inline: it runs once per triangle per contact update, where a call costs more than the work.
-  Triangle<T> t;
+  Triangle<T> t = from_validated(ccw, normals);
   for (int i = 0; i < 3; ++i) {
     const Vec2<T>& v = ccw[i];
     const Vec2<T>& n = normals[i];
-    t.len_[i] = Vec2<T>(-n.y(), n.x()).dot(ccw[i == 2 ? 0 : i + 1] - v);
     t.v_[i] = Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + translation;
     t.n_[i] = Vec2<T>(c * n.x() - s * n.y(), s * n.x() + c * n.y());
   }
-  t.size_ = std::max(std::max(t.len_[0], t.len_[1]), t.len_[2]);
   return t;
 }
 
