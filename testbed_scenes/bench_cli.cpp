@@ -40,8 +40,12 @@ int run(const BenchArgs& args) {
   std::ostream& tables = args.json == "-" ? std::cerr : std::cout;
   const std::vector<report::BenchRecord> records = report::run_bench(options, std::cerr);
   report::write_table(records, tables);
-  std::string sections;  // the report's scaling section
+  std::string sections;  // the report's scaling and streams sections
   std::vector<std::string> problems;
+  if (!args.out.empty()) {  // report::write_outputs says so if it is not writable
+    std::error_code ec;
+    std::filesystem::create_directories(args.out, ec);
+  }
 #ifdef DYOP_WITH_BOX2D
   if (!args.no_scaling) {
     scenes::ScalingOptions scaling;
@@ -49,11 +53,7 @@ int run(const BenchArgs& args) {
     const std::vector<scenes::ScalingRecord> rain = scenes::run_rain_scaling(scaling, std::cerr);
     tables << '\n';
     scenes::write_scaling_table(rain, tables);
-    if (!args.out.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(args.out, ec);
-      sections = scenes::write_scaling_outputs(rain, args.out, problems);
-    }
+    if (!args.out.empty()) sections = scenes::write_scaling_outputs(rain, args.out, problems);
   }
   if (!args.no_streams) {
     scenes::StreamOptions streams;
@@ -64,11 +64,7 @@ int run(const BenchArgs& args) {
     const std::vector<scenes::StreamResult> results = scenes::run_streams(streams, std::cerr);
     tables << '\n';
     report::write_stream_table(results, tables);
-    if (!args.out.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(args.out, ec);
-      sections += report::write_stream_outputs(results, args.out, problems);
-    }
+    if (!args.out.empty()) sections += report::write_stream_outputs(results, args.out, problems);
   }
 #endif
   if (!args.json.empty()) {

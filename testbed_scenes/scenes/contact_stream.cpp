@@ -77,9 +77,9 @@ struct Replay {
   double seconds = 0;
 };
 
-// The whole stream once, through the plug-in or (nullopt) `b2CollidePolygons`; `memory` holds
-// one entry per contact and is reset first, untimed.
-Replay replay_once(const ContactStream& stream, std::optional<box2d::Backend> backend,
+// The whole stream once, through the plug-in's backend or (Box2D's own) `b2CollidePolygons`;
+// `memory` holds one entry per contact and is reset first, untimed.
+Replay replay_once(const ContactStream& stream, const Runner& backend,
                    const box2d::Config& config, std::vector<box2d::ContactMemory>& memory) {
   memory.assign(stream.contacts.size(), box2d::ContactMemory{});
   Replay r;
@@ -105,7 +105,7 @@ Replay replay_once(const ContactStream& stream, std::optional<box2d::Backend> ba
 
 // One timed pass, ns per call: the stream repeated until `min_pass_ms`, memories reset between
 // repetitions, so that every repetition starts as the world did.
-double timed_pass(const ContactStream& stream, std::optional<box2d::Backend> backend,
+double timed_pass(const ContactStream& stream, const Runner& backend,
                   const StreamOptions& options, std::vector<box2d::ContactMemory>& memory) {
   double total = 0;
   std::uint64_t calls = 0;
@@ -237,7 +237,7 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
 
   // Runner k < backend_count is all_backends[k]; the last is box2d-own.
   constexpr int runners = box2d::backend_count + 1;
-  auto backend_of = [](int k) -> std::optional<box2d::Backend> {
+  auto backend_of = [](int k) -> Runner {
     if (k == box2d::backend_count) return std::nullopt;
     return box2d::all_backends[k];
   };
@@ -251,8 +251,8 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
     agree(m, m, c, call, own);
   }
   for (int k = 0; k < runners; ++k) {
-    const std::optional<box2d::Backend> b = backend_of(k);
-    r.runners[k].runner = b ? box2d::name(*b) : box2d_own;
+    const Runner b = backend_of(k);
+    r.runners[k].runner = name(b);
     r.runners[k].agreement = b ? compare_with_box2d(stream, *b, options.config) : own;
     r.runners[k].ns_per_call = HUGE_VAL;
   }
