@@ -201,7 +201,7 @@ void register_precision() {
     for (Level l : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
       const std::string tail = std::string("/") + workloads::name(c) + "/" + level_name(l) + "/" +
                                precision_name<T>();
-      for (Method m : all_methods) {
+      for (Method m : pair_methods) {
         benchmark::RegisterBenchmark(("BM_" + std::string(name(m)) + tail).c_str(), bm_method<T>,
                                      m, c, l);
       }

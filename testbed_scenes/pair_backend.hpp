@@ -20,7 +20,7 @@ struct PairBackend {
   Result<float> (*run_float)(const Triangle<float>&, const Triangle<float>&) = nullptr;
 };
 
-/// Every backend of this build, methods first in `dyop::all_methods` order.
+/// Every backend of this build, methods first in `dyop::pair_methods` order.
 std::vector<PairBackend> pair_backends();
 
 /// The result of a float run widened to double (for one output path).

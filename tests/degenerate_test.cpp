@@ -116,7 +116,7 @@ void check_pairs(const std::vector<RawPair>& rows, Sweep& sweep) {
     const double size = pair_size(p);
     const double band = 4 * touching_tolerance<T>() * size;
     ++sweep.pairs;
-    for (Method m : all_methods) {
+    for (Method m : pair_methods) {
       Query<T> q{Level::Manifold};
       q.margin = T(0.01);
       const Result<T> r = penetrate(m, t.a.triangle, t.b.triangle, q);

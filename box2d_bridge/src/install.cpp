@@ -5,6 +5,10 @@
 namespace dyop::box2d {
 
 InstallResult install(Backend backend, const Config& config) {
+  if (!is_backend(backend)) {
+    return {InstallStatus::UnsupportedMethod,
+            "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
+  }
   detail::Installation& now = detail::installation();
   if (now.backend == backend && now.config == config) {
     return {InstallStatus::Done, "already installed"};
@@ -21,15 +25,6 @@ InstallResult install(Backend backend, const Config& config) {
   now.config = config;
   reset_stats();
   return {InstallStatus::Done, "installed"};
-}
-
-InstallResult install(Method method, const Config& config) {
-  const std::optional<Backend> backend = detail::backend_of(method);
-  if (!backend) {
-    return {InstallStatus::UnsupportedMethod,
-            "refused: dyop-paper reproduces the paper's equations and is not offered to Box2D"};
-  }
-  return install(*backend, config);
 }
 
 InstallResult uninstall() {

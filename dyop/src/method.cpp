@@ -2,21 +2,9 @@
 
 namespace dyop {
 
-const char* name(Method m) {
-  switch (m) {
-    case Method::Dyop: return "dyop";
-    case Method::DyopFast: return "dyop-fast";
-    case Method::DyopPaper: return "dyop-paper";
-    case Method::LinCanny: return "lin-canny";
-    case Method::Sat: return "sat";
-    case Method::Epa: return "epa";
-  }
-  return "unknown";
-}
-
 std::optional<Method> parse_method(std::string_view s) {
-  for (Method m : all_methods) {
-    if (s == name(m)) return m;
+  for (const MethodInfo& row : method_table) {
+    if (s == row.name) return row.method;
   }
   return std::nullopt;
 }
@@ -24,17 +12,13 @@ std::optional<Method> parse_method(std::string_view s) {
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
                     LinCannyCache* cache) {
-  switch (m) {
-    case Method::Dyop: return dyop(a, b, query);
-    case Method::DyopFast: return dyop_fast(a, b, query);
-    case Method::DyopPaper: return dyop_paper(a, b, query);
-    case Method::LinCanny: return lin_canny(a, b, query, cache);
-    case Method::Sat: return sat(a, b, query);
-    case Method::Epa: return epa(a, b, query);
+  const PairFunction<T> run = info(m).run<T>();
+  if (run == nullptr) {
+    Result<T> invalid;
+    invalid.reason = "not a per-pair method: see dyop::pair_methods";
+    return invalid;
   }
-  Result<T> invalid;
-  invalid.reason = "unknown method";
-  return invalid;
+  return run(a, b, query, cache);
 }
 
 template Result<float> penetrate(Method, const Triangle<float>&, const Triangle<float>&,

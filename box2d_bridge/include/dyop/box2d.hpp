@@ -43,28 +43,29 @@
 
 namespace dyop::box2d {
 
-/// The narrow phase a triangle pair goes to. Every exact or approximate method of the library
-/// except `DyopPaper` (kept for reproducing the paper, not for simulation), and Box2D's own
-/// `b2CollidePolygons` through the same path, for comparison.
-enum class Backend : std::uint8_t {
-  Dyop,      ///< `dyop`: DyOP-PD with certification, exact
-  DyopFast,  ///< `dyop-fast`: the pivot heuristic alone, approximate (can miss penetrations)
-  LinCanny,  ///< `lin-canny`: closest-feature tracking, warm-started by a cache in each contact
-  Sat,       ///< `sat`: the exact reference
-  Epa,       ///< `epa`: GJK + EPA
-  Box2D,     ///< `box2d`: `b2CollidePolygons`, Box2D's own answer through the plug-in
-};
+/// The narrow phase a triangle pair goes to: a method of the registry (`dyop/method.hpp`) whose
+/// row is `box2d_backend` — every method of the library but `DyopPaper` (kept for reproducing the
+/// paper, not for simulation) and `Batch` (many pairs per call), and `Method::Box2D`
+/// (`b2CollidePolygons`, Box2D's own answer through the same path, for comparison).
+using Backend = Method;
 
-/// Number of backends: the size of `Stats::triangle_pairs`.
-inline constexpr int backend_count = 6;
+namespace detail {
+inline constexpr auto is_backend = [](const MethodInfo& row) { return row.box2d_backend; };
+}  // namespace detail
 
-/// Every backend, in declaration order.
-inline constexpr Backend all_backends[backend_count] = {Backend::Dyop,     Backend::DyopFast,
-                                                        Backend::LinCanny, Backend::Sat,
-                                                        Backend::Epa,      Backend::Box2D};
+/// Every backend, in registry order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
+inline constexpr auto all_backends =
+    dyop::detail::select_methods<dyop::detail::count_methods(detail::is_backend)>(
+        detail::is_backend);
 
-/// The command-line spelling: "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d".
-const char* name(Backend b);
+/// Number of backends.
+inline constexpr int backend_count = static_cast<int>(all_backends.size());
+
+/// True when the plug-in offers `m` (`info(m).box2d_backend`).
+constexpr bool is_backend(Method m) { return info(m).box2d_backend; }
+
+/// A backend's spelling is its method's (`dyop::name`).
+using dyop::name;
 
 /// B's face becomes the reference only when its separation beats A's best by more than this
 /// (metres). Why this value: it is `b2CollidePolygons`' own `k_tol`, so the reference face flips
@@ -74,7 +75,7 @@ inline constexpr float face_hysteresis = 0.1f * b2_linearSlop;
 /// How an `install` or `uninstall` went.
 enum class InstallStatus : std::uint8_t {
   Done,               ///< the requested backend (or Box2D's own contact) is now registered
-  UnsupportedMethod,  ///< refused: the method is not offered to Box2D (`DyopPaper`)
+  UnsupportedMethod,  ///< refused: the method is not offered to Box2D (`is_backend` is false)
 };
 
 /// The outcome of `install` / `uninstall`, returned by value.
@@ -173,12 +174,10 @@ struct ContactMemory {
 ///   on; after `uninstall` it answers with `b2CollidePolygons`, exactly as Box2D's own contact.
 /// - Contacts Box2D's own code made before the install keep Box2D's answer until they end (when
 ///   the two fixtures' fat AABBs stop overlapping): Box2D offers no way to replace a live contact.
-/// Installing the installed backend with the same skips does nothing and succeeds.
+/// Installing the installed backend with the same skips does nothing and succeeds. A method
+/// that is not a backend (`DyopPaper`, `Batch`) is refused (`UnsupportedMethod`) and changes
+/// nothing.
 InstallResult install(Backend backend, const Config& config = Config::all());
-
-/// `install` by library method: `Dyop`, `DyopFast`, `LinCanny`, `Sat`, `Epa`; `DyopPaper` is
-/// refused (`UnsupportedMethod`).
-InstallResult install(Method method, const Config& config = Config::all());
 
 /// Registers again what was registered for polygon pairs before the plug-in was installed
 /// (Box2D's own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made
@@ -203,8 +202,9 @@ void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShap
 
 /// Counters since the last `install` or `reset_stats`.
 struct Stats {
-  /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`).
-  std::array<std::uint64_t, backend_count> triangle_pairs{};
+  /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`; methods that are
+  /// not backends stay 0).
+  std::array<std::uint64_t, method_count> triangle_pairs{};
   /// Other polygon pairs (a side with more than 3 vertices), passed to `b2CollidePolygons`.
   std::uint64_t polygon_pairs = 0;
   /// Triangle-pair evaluations that produced a non-empty manifold.

@@ -1,10 +1,21 @@
 #pragma once
 /// \file
-/// One dispatcher over every penetration-depth method, for callers that choose at run time.
+/// The registry of narrow phases: one row per method, and every tool that lists methods draws
+/// from it (the `dyop` command line, `dyop bench`, `dyop stress`, the scenes and the paper
+/// experiment, the Box2D plug-in's backends, the Google Benchmark suite, the fuzzers). Adding a
+/// method means one `Method` value, one row of `method_table` and its implementation.
+///
+/// Each row says how the method is called (`Entry`), in which precisions and at which query
+/// levels, whether it keeps state between queries of the same pair (warm start), whether the
+/// Box2D plug-in offers it, and how exact it is. Its `name` is its one spelling in every table,
+/// CSV, chart and command line; a warm-startable method run both ways is spelt by `variant_name`.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 #include "dyop/dyop.hpp"
 #include "dyop/dyop_paper.hpp"
@@ -16,7 +27,7 @@
 
 namespace dyop {
 
-/// The methods of the library; `name` gives each one's command-line spelling.
+/// Every narrow phase, in registry order (`method_table`).
 enum class Method : std::uint8_t {
   Dyop,       ///< `dyop`: DyOP-PD with certification, exact
   DyopFast,   ///< `dyop-fast`: the pivot heuristic alone, approximate
@@ -24,19 +35,200 @@ enum class Method : std::uint8_t {
   LinCanny,   ///< `lin-canny`: closest-feature tracking, local-minimum depth
   Sat,        ///< `sat`: the exact reference
   Epa,        ///< `epa`: GJK + EPA
+  Batch,      ///< `batch`: `sat`'s answer for many pairs at once (`penetrate_batch`)
+  Box2D,      ///< `box2d`: Box2D 2.4's `b2CollidePolygons`, the production reference
 };
 
-/// Every method, in declaration order.
-inline constexpr Method all_methods[] = {Method::Dyop,     Method::DyopFast, Method::DyopPaper,
-                                         Method::LinCanny, Method::Sat,      Method::Epa};
+/// Number of methods: the size of arrays indexed by `static_cast<int>(Method)`.
+inline constexpr int method_count = 8;
 
-/// The command-line spelling: "dyop", "dyop-fast", "dyop-paper", "lin-canny", "sat", "epa".
-const char* name(Method m);
+/// How a method is called.
+enum class Entry : std::uint8_t {
+  /// One pair per call, through `penetrate` (or the row's `run<T>()`).
+  PerPair,
+  /// Many pairs per call over structure-of-arrays input: `penetrate_batch` (`dyop/batch.hpp`).
+  Batch,
+  /// Box2D's own code, which this library does not link: the Box2D plug-in
+  /// (`dyop/box2d.hpp`) runs it in worlds, the testbed's Box2D reference on single pairs.
+  Box2D,
+};
 
-/// The method spelt `s`, or nothing.
+/// How close to the exact answer a method's depth and status are, by design.
+enum class Accuracy : std::uint8_t {
+  Exact,        ///< the exact answer up to rounding, invariant under rigid motions
+  ToTolerance,  ///< converges to a stated tolerance, invariant under rigid motions (EPA)
+  LocalDepth,   ///< exact distance; depth a local minimum that depends on the start (Lin–Canny)
+  /// Exact axes computed in world coordinates with absolute tolerances: depends on where the
+  /// pair is and how large it is (`b2CollidePolygons`)
+  AbsoluteTolerance,
+  Approximate,  ///< a heuristic: can misclassify pairs and misjudge depths (`dyop-fast`, paper)
+};
+
+/// A per-pair entry point: `cache` is the warm-start state of methods that keep one (nullptr:
+/// cold start) and is ignored by the others.
+template <class T>
+using PairFunction = Result<T> (*)(const Triangle<T>&, const Triangle<T>&, const Query<T>&,
+                                   LinCannyCache*);
+
+/// The bit of `level` in `MethodInfo::levels`.
+constexpr std::uint8_t level_bit(Level level) {
+  return static_cast<std::uint8_t>(1u << static_cast<unsigned>(level));
+}
+
+/// Every query level.
+inline constexpr std::uint8_t all_levels = level_bit(Level::Overlap) | level_bit(Level::Depth) |
+                                           level_bit(Level::Contact) | level_bit(Level::Manifold);
+
+/// One row of the registry.
+struct MethodInfo {
+  Method method;  ///< the row's method
+  /// Its one spelling: command line, tables, CSV columns, chart legends.
+  const char* name;
+  /// Warm-startable methods only (`warm_start`): the spellings of its runs from no state and from
+  /// the pair's previous query, where a comparison times both; nullptr for the others.
+  const char* cold_name;
+  const char* warm_name;  ///< see `cold_name`
+  const char* summary;    ///< one line for lists and `--help`
+  Entry entry;            ///< how it is called
+  /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth; Box2D: its
+  /// manifold is always whole, so it is asked (and timed) at Manifold.
+  std::uint8_t levels;
+  bool runs_double;    ///< has a double-precision version (Box2D runs in float only)
+  bool warm_start;     ///< keeps state between queries of the same pair (`LinCannyCache`)
+  bool box2d_backend;  ///< offered by the Box2D plug-in as a backend for triangle pairs
+  Accuracy accuracy;   ///< how exact it is by design
+  PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
+  PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
+
+  /// True when it answers queries at `level`.
+  constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }
+  /// True when it needs Box2D (`Entry::Box2D`).
+  constexpr bool needs_box2d() const { return entry == Entry::Box2D; }
+  /// True when its answers are exact or within a tolerance that does not depend on where the
+  /// pair is: the same answer, moved, for a moved pair.
+  constexpr bool invariant() const {
+    return accuracy == Accuracy::Exact || accuracy == Accuracy::ToTolerance;
+  }
+  /// The per-pair entry point in precision T (nullptr unless `Entry::PerPair`).
+  template <class T>
+  constexpr PairFunction<T> run() const {
+    if constexpr (std::is_same_v<T, float>) {
+      return run_float;
+    } else {
+      return run_double;
+    }
+  }
+};
+
+namespace detail {
+
+// The per-pair entry point of a method that keeps no state between queries.
+template <class T, Result<T> (*F)(const Triangle<T>&, const Triangle<T>&, const Query<T>&)>
+Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
+                    LinCannyCache*) {
+  return F(a, b, query);
+}
+
+}  // namespace detail
+
+/// The registry, in `Method` order.
+inline constexpr MethodInfo method_table[method_count] = {
+    {Method::Dyop, "dyop", nullptr, nullptr,
+     "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
+     all_levels, true, false, true, Accuracy::Exact,
+     &detail::stateless<float, &dyop<float>>, &detail::stateless<double, &dyop<double>>},
+    {Method::DyopFast, "dyop-fast", nullptr, nullptr,
+     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_levels, true, false,
+     true, Accuracy::Approximate, &detail::stateless<float, &dyop_fast<float>>,
+     &detail::stateless<double, &dyop_fast<double>>},
+    {Method::DyopPaper, "dyop-paper", nullptr, nullptr,
+     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_levels, true,
+     false, false, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
+     &detail::stateless<double, &dyop_paper<double>>},
+    {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
+     "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
+     Entry::PerPair, all_levels, true, true, true, Accuracy::LocalDepth, &lin_canny<float>,
+     &lin_canny<double>},
+    {Method::Sat, "sat", nullptr, nullptr,
+     "minimum overlap over the six Minkowski-difference axes: the exact reference",
+     Entry::PerPair, all_levels, true, false, true, Accuracy::Exact,
+     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
+    {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
+     all_levels, true, false, true, Accuracy::ToTolerance, &detail::stateless<float, &epa<float>>,
+     &detail::stateless<double, &epa<double>>},
+    {Method::Batch, "batch", nullptr, nullptr,
+     "sat's answer over structure-of-arrays input, AVX2 when the CPU has it", Entry::Batch,
+     static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)), true, false,
+     false, Accuracy::Exact, nullptr, nullptr},
+    {Method::Box2D, "box2d", nullptr, nullptr,
+     "Box2D 2.4's b2CollidePolygons, the production reference", Entry::Box2D,
+     level_bit(Level::Manifold), false, false, true, Accuracy::AbsoluteTolerance, nullptr,
+     nullptr},
+};
+
+namespace detail {
+
+constexpr bool rows_in_method_order() {
+  for (int i = 0; i < method_count; ++i) {
+    if (static_cast<int>(method_table[i].method) != i) return false;
+  }
+  return true;
+}
+static_assert(rows_in_method_order(), "method_table must list the methods in `Method` order");
+
+}  // namespace detail
+
+/// The row of `m`.
+constexpr const MethodInfo& info(Method m) { return method_table[static_cast<int>(m)]; }
+
+/// The one spelling of `m` (`info(m).name`): "dyop", "dyop-fast", "dyop-paper", "lin-canny",
+/// "sat", "epa", "batch", "box2d".
+constexpr const char* name(Method m) { return info(m).name; }
+
+/// The spelling of `m` run cold (`warm == false`) or warm-started: "lin-canny-cold" and
+/// "lin-canny-warm" for a warm-startable method, `name(m)` for the others.
+constexpr const char* variant_name(Method m, bool warm) {
+  const MethodInfo& row = info(m);
+  if (!row.warm_start) return row.name;
+  return warm ? row.warm_name : row.cold_name;
+}
+
+/// The method spelt `s` (its `name`), or nothing.
 std::optional<Method> parse_method(std::string_view s);
 
-/// Runs method `m`. `cache` is used by `LinCanny` only (nullptr: cold start).
+namespace detail {
+
+template <class Keep>
+constexpr std::size_t count_methods(Keep keep) {
+  std::size_t n = 0;
+  for (const MethodInfo& row : method_table) n += keep(row) ? 1 : 0;
+  return n;
+}
+
+template <std::size_t N, class Keep>
+constexpr std::array<Method, N> select_methods(Keep keep) {
+  std::array<Method, N> out{};
+  std::size_t k = 0;
+  for (const MethodInfo& row : method_table) {
+    if (keep(row)) out[k++] = row.method;
+  }
+  return out;
+}
+
+inline constexpr auto is_per_pair = [](const MethodInfo& row) {
+  return row.entry == Entry::PerPair;
+};
+
+}  // namespace detail
+
+/// The methods `penetrate` runs (`Entry::PerPair`), in registry order: dyop, dyop-fast,
+/// dyop-paper, lin-canny, sat, epa.
+inline constexpr auto pair_methods =
+    detail::select_methods<detail::count_methods(detail::is_per_pair)>(detail::is_per_pair);
+
+/// Runs method `m` on one pair. `cache` is used by the methods that keep warm-start state
+/// (`info(m).warm_start`; nullptr: cold start). `m` must be one of `pair_methods`; the others
+/// (`Batch`, `Box2D`) answer `Invalid` here.
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,
                     const Query<T>& query = {}, LinCannyCache* cache = nullptr);
