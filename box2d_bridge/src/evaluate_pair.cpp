@@ -64,10 +64,15 @@ void full_evaluation(b2Manifold* manifold, std::optional<Method> method, const C
   bool answered = false;
   if (method && memory.shapes == ContactMemory::Shapes::Triangles) {
     LinCannyCache cold;
-    answered = triangle_manifold(*method, placed(a), placed(b, b_in_a),
-                                 a, b, b_in_a,
-                                 config.lin_canny_cache ? &memory.lin_canny : &cold, manifold,
-                                 &memory.last_face);
+    const Triangle<float> ta = placed(a);
+    const Triangle<float> tb = placed(b, b_in_a);
+    const TriangleManifold r = triangle_manifold(
+        *method, {ta, tb, a, b, b_in_a}, config.lin_canny_cache ? &memory.lin_canny : &cold);
+    answered = r.answered;
+    if (answered) {
+      memory.last_face = r.face;
+      *manifold = r.manifold;
+    }
   }
   if (!answered) {
     if (method) ++counters().fallbacks;
