@@ -1,5 +1,7 @@
-// libFuzzer target for one method (chosen at build time by DYOP_FUZZ_METHOD: a `dyop::Method`
-// spelling, or "batch"), on one triangle pair in float or double (format: fuzz_input.hpp).
+// libFuzzer target for one method of the registry (`dyop/method.hpp`), chosen at run time with
+// `--method=NAME` (its one spelling; libFuzzer leaves flags that start with `--` to the target),
+// on one triangle pair in float or double (format: fuzz_input.hpp). `--list-methods` prints the
+// methods it takes, one per line, and exits: every row of the registry that runs without Box2D.
 //
 // What it asserts, besides "no crash, no sanitizer report":
 // - `Triangle<T>::make` decides every input; a pair it accepts is answered at every level, never
@@ -15,7 +17,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <string>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "dyop/batch.hpp"
@@ -27,10 +30,11 @@
 namespace dyop::fuzz {
 namespace {
 
-const std::string kTarget = DYOP_FUZZ_METHOD;
+// The method under test, set once by LLVMFuzzerInitialize.
+Method g_method = Method::Dyop;
 
 [[noreturn]] void fail(const char* what, const FuzzInput& in) {
-  std::fprintf(stderr, "%s: %s (%s) on", kTarget.c_str(), what, in.is_float ? "float" : "double");
+  std::fprintf(stderr, "%s: %s (%s) on", name(g_method), what, in.is_float ? "float" : "double");
   for (double c : in.coords) std::fprintf(stderr, " %.17g", c);
   std::fprintf(stderr, "\n");
   std::abort();
@@ -118,13 +122,12 @@ void run(const FuzzInput& in) {
   auto at = [&](int k) { return Vec2<T>(T(in.coords[k]), T(in.coords[k + 1])); };
   const TriangleOrError<T> a = Triangle<T>::make(at(0), at(2), at(4));
   const TriangleOrError<T> b = Triangle<T>::make(at(6), at(8), at(10));
-  if (kTarget == "batch") {
+  if (info(g_method).entry == Entry::Batch) {
     check_batch(in, a, b);
     return;
   }
   if (!a.ok() || !b.ok()) return;
-  const std::optional<Method> m = parse_method(kTarget);
-  require(m.has_value(), "unknown DYOP_FUZZ_METHOD", in);
+  const Method m = g_method;
   const T size = std::max(a.triangle.size(), b.triangle.size());
   const T band = touching_tolerance<T>() * size;
   LinCannyCache cache = cache_from(in);
@@ -133,29 +136,29 @@ void run(const FuzzInput& in) {
     Query<T> q{level};
     q.margin = T(0.01) * size;
     q.face_hysteresis = T(0.001) * size;
-    const Result<T> r = penetrate(*m, a.triangle, b.triangle, q, &cache);
+    const Result<T> r = penetrate(m, a.triangle, b.triangle, q, &cache);
     if (r.status == Status::Invalid) {
-      require(*m == Method::DyopPaper && r.reason != nullptr, "Invalid on a valid pair", in);
+      require(m == Method::DyopPaper && r.reason != nullptr, "Invalid on a valid pair", in);
       continue;
     }
     require(finite_at(r, level), "NaN or inf in a field the level promises", in);
     if (level == Level::Depth) depth_status = r.status;
   }
   if (depth_status == Status::Invalid) return;
-  const Result<T> r = penetrate(*m, a.triangle, b.triangle, Query<T>{Level::Depth});
-  if (*m == Method::Sat) check_exact(r, in, band);
-  if (*m == Method::Dyop) {
+  const Result<T> r = penetrate(m, a.triangle, b.triangle, Query<T>{Level::Depth});
+  if (m == Method::Sat) check_exact(r, in, band);
+  if (m == Method::Dyop) {
     const Result<T> s = sat(a.triangle, b.triangle);
     require(std::abs(double(r.separation) - double(s.separation)) <= agreement<T>(in),
             "dyop and sat disagree on separation", in);
     if (std::abs(s.separation) > 2 * band) require(r.status == s.status, "dyop and sat disagree on status", in);
   }
-  if (*m == Method::Dyop || *m == Method::Sat) {
+  if (m == Method::Dyop || m == Method::Sat) {
     // Asking for the proof of separation instead of the distance changes no status, and the
     // gap it reports is a lower bound on the distance.
     Query<T> gap{Level::Depth};
     gap.apart = Apart::Gap;
-    const Result<T> g = penetrate(*m, a.triangle, b.triangle, gap);
+    const Result<T> g = penetrate(m, a.triangle, b.triangle, gap);
     require(g.status == r.status, "Apart::Gap changes the status", in);
     require(finite_at(g, Level::Depth), "NaN or inf with Apart::Gap", in);
     if (g.status == Status::Separated) {
@@ -165,8 +168,41 @@ void run(const FuzzInput& in) {
   }
 }
 
+// True for the methods this target can run: every row that needs no Box2D.
+bool fuzzable(const MethodInfo& row) { return !row.needs_box2d(); }
+
 }  // namespace
 }  // namespace dyop::fuzz
+
+// Reads `--method=NAME` (required) or `--list-methods`; exits with a message on anything else.
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
+  using namespace dyop;
+  std::optional<Method> chosen;
+  for (int i = 1; i < *argc; ++i) {
+    const std::string_view arg = (*argv)[i];
+    if (arg == "--list-methods") {
+      for (const MethodInfo& row : method_table) {
+        if (fuzz::fuzzable(row)) std::printf("%s\n", row.name);
+      }
+      std::exit(0);
+    }
+    constexpr std::string_view flag = "--method=";
+    if (arg.substr(0, flag.size()) == flag) {
+      chosen = parse_method(arg.substr(flag.size()));
+      if (!chosen || !fuzz::fuzzable(info(*chosen))) {
+        std::fprintf(stderr, "fuzz_method: no fuzzable method '%s' (--list-methods)\n",
+                     (*argv)[i] + flag.size());
+        std::exit(2);
+      }
+    }
+  }
+  if (!chosen) {
+    std::fprintf(stderr, "fuzz_method: give --method=NAME (--list-methods lists them)\n");
+    std::exit(2);
+  }
+  fuzz::g_method = *chosen;
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const dyop::fuzz::FuzzInput in = dyop::fuzz::decode(data, size);

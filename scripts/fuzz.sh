@@ -3,9 +3,11 @@
 # in build-fuzz/, then runs each for a bounded time on its seed corpus (fuzz/corpus/csv for the
 # CSV reader, fuzz/corpus/methods for the methods), new inputs going to build-fuzz/corpus/.
 # Any crash, sanitizer report or failed property stops it with a non-zero status and leaves the
-# reproducer in build-fuzz/artifacts/ (replay: build-fuzz/bin/<target> <file>).
+# reproducer in build-fuzz/artifacts/ (replay: build-fuzz/bin/fuzz_csv <file>, or
+# build-fuzz/bin/fuzz_method --method=NAME <file>).
 #   FUZZ_SECONDS  seconds per target (default 20)
-#   FUZZ_TARGETS  targets to run (default: all)
+#   FUZZ_TARGETS  targets to run (default: all): fuzz_csv, and method:NAME for each method of the
+#                 registry that runs without Box2D (fuzz_method --list-methods)
 #   FUZZ_SEED     libFuzzer's seed (default 1, so that CI explores the same inputs every run and
 #                 passes or fails alike; 0 lets libFuzzer pick one, for hunting)
 # Needs clang and libFuzzer's runtime (Debian 12: clang, libclang-rt-14-dev).
@@ -13,8 +15,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-20}"
 seed="${FUZZ_SEED:-1}"
-targets=(${FUZZ_TARGETS:-fuzz_csv fuzz_dyop fuzz_dyop_fast fuzz_dyop_paper fuzz_lin_canny fuzz_sat
-                         fuzz_epa fuzz_batch})
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ not found (Debian 12: apt-get install clang libclang-rt-14-dev)" >&2
@@ -29,18 +29,30 @@ fi
 start=$SECONDS
 cmake -S . -B build-fuzz -DDYOP_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
       -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDYOP_BUILD_TESTS=OFF -DDYOP_BUILD_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
+cmake --build build-fuzz -j"$(nproc)" --target fuzz_csv fuzz_method
 echo "fuzz: built in $((SECONDS - start)) s" >&2
+if [ -n "${FUZZ_TARGETS:-}" ]; then
+  targets=($FUZZ_TARGETS)
+else
+  targets=(fuzz_csv)
+  for method in $(build-fuzz/bin/fuzz_method --list-methods); do targets+=("method:$method"); done
+fi
 
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 mkdir -p build-fuzz/artifacts
 for target in "${targets[@]}"; do
-  seeds=fuzz/corpus/methods
-  [ "$target" = fuzz_csv ] && seeds=fuzz/corpus/csv
+  if [ "$target" = fuzz_csv ]; then
+    run=(build-fuzz/bin/fuzz_csv)
+    seeds=fuzz/corpus/csv
+  else
+    run=(build-fuzz/bin/fuzz_method "--method=${target#method:}")
+    seeds=fuzz/corpus/methods
+    target="fuzz_${target#method:}"
+  fi
   mkdir -p "build-fuzz/corpus/$target"
   echo "fuzz: $target for ${seconds} s" >&2
-  if ! build-fuzz/bin/"$target" -seed="$seed" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  if ! "${run[@]}" -seed="$seed" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
          -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$target-" \
          "build-fuzz/corpus/$target" "$seeds" > "build-fuzz/$target.log" 2>&1; then
     tail -n 60 "build-fuzz/$target.log" >&2
