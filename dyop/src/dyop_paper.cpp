@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "detail/finish.hpp"
+#include "detail/fill_result.hpp"
 #include "detail/pivot.hpp"
 
 namespace dyop {
