@@ -70,16 +70,16 @@ struct Feature {
   std::uint8_t index = 0;  ///< caller's vertex index, or caller's edge index (edge i: vertex i→i+1)
 };
 
-/// Which end of the reference face clipped a manifold point (part of its key).
-enum class ClipSide : std::uint8_t { None, Start, End };
-
 /// One contact point of a manifold.
 template <class T>
 struct ManifoldPoint {
   Vec2<T> point = Vec2<T>::Zero();  ///< world; on the incident triangle's edge (after clipping)
   T separation = 0;  ///< signed distance from the reference face line, negative when penetrating
   /// Feature pair that made the point, stable from frame to frame while the same features touch
-  /// (warm starting matches on it): reference side and edge, incident vertex or clipped edge.
+  /// (warm starting matches on it). It encodes which triangle holds the reference face, the
+  /// caller's index of the reference edge, the caller's index of the incident vertex (point not
+  /// clipped) or incident edge (point clipped), and which end of the reference face clipped the
+  /// point (none, start or end). Compare keys for equality only; the layout is not part of the API.
   std::uint32_t key = 0;
 };
 
