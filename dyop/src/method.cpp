@@ -33,7 +33,7 @@ Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b, const 
     case Method::Epa: return epa(a, b, query);
   }
   Result<T> invalid;
-  invalid.reason = "unknown method";
+  invalid.reason = InvalidReason::UnknownMethod;
   return invalid;
 }
 
