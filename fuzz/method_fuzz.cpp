@@ -138,7 +138,8 @@ void run(const FuzzInput& in) {
     q.face_hysteresis = T(0.001) * size;
     const Result<T> r = penetrate(m, a.triangle, b.triangle, q, &cache);
     if (r.status == Status::Invalid) {
-      require(m == Method::DyopPaper && r.reason != nullptr, "Invalid on a valid pair", in);
+      require(m == Method::DyopPaper && r.reason != InvalidReason::None,
+              "Invalid on a valid pair", in);
       continue;
     }
     require(finite_at(r, level), "NaN or inf in a field the level promises", in);

@@ -105,7 +105,9 @@ const char* pair_csv_header() { return "row,status,overlap,depth,separation,nx,n
 
 std::string format_result_line(int row, const Result<double>& r) {
   if (r.status == Status::Invalid) {
-    return format_error_line(row, r.reason ? r.reason : "the method could not handle this pair");
+    return format_error_line(row, r.reason != InvalidReason::None
+                                      ? describe(r.reason)
+                                      : "the method could not handle this pair");
   }
   const bool overlap = r.status != Status::Separated;
   const bool penetrating = r.status == Status::Penetrating;

@@ -122,7 +122,7 @@ void check_pairs(const std::vector<RawPair>& rows, Sweep& sweep) {
       const Result<T> r = penetrate(m, t.a.triangle, t.b.triangle, q);
       if (r.status == Status::Invalid) {
         EXPECT_EQ(m, Method::DyopPaper) << name(m) << " refused a valid pair";
-        EXPECT_NE(r.reason, nullptr);
+        EXPECT_NE(r.reason, InvalidReason::None);
         continue;
       }
       ASSERT_TRUE(finite(r)) << name(m) << " on " << p.a[2].transpose() << " / " << p.b[0].transpose();

@@ -40,7 +40,7 @@ Result<double> run(Method method, const RawPair& p) {
   const auto t = build<double>(p);
   EXPECT_TRUE(t.a.ok() && t.b.ok());
   const Result<double> r = penetrate(method, t.a.triangle, t.b.triangle, Query<double>{Level::Depth});
-  EXPECT_NE(r.status, Status::Invalid) << (r.reason ? r.reason : "");
+  EXPECT_NE(r.status, Status::Invalid) << describe(r.reason);
   return r;
 }
 

@@ -42,7 +42,7 @@ Result<float> checked(Result<float> r) {
                       r.normal.allFinite() && r.witness_a.allFinite() && r.witness_b.allFinite();
   if (finite) return r;
   Result<float> invalid;
-  invalid.reason = "Box2D returned a non-finite value (coordinates too large for its float arithmetic)";
+  invalid.reason = InvalidReason::Box2DNonFinite;
   return invalid;
 }
 

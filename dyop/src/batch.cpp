@@ -86,9 +86,9 @@ bool cpu_has_avx2_fma() {
 template <class T>
 void run_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth) {
   if (depth) {
-    BatchKernel<PortableLanes<T>, true>::run(v, lim);
+    SatOverLanes<PortableLanes<T>, true>::run(v, lim);
   } else {
-    BatchKernel<PortableLanes<T>, false>::run(v, lim);
+    SatOverLanes<PortableLanes<T>, false>::run(v, lim);
   }
 }
 
@@ -106,9 +106,9 @@ template <class T>
 void penetrate_row_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth,
                             std::size_t row) {
   if (depth) {
-    BatchKernel<PortableLanes<T>, true>::block(v, row, lim);
+    SatOverLanes<PortableLanes<T>, true>::block(v, row, lim);
   } else {
-    BatchKernel<PortableLanes<T>, false>::block(v, row, lim);
+    SatOverLanes<PortableLanes<T>, false>::block(v, row, lim);
   }
 }
 

@@ -156,9 +156,9 @@ struct Double4 {
 template <class L>
 void run(const BatchView<typename L::T>& v, const BatchLimits<typename L::T>& lim, bool depth) {
   if (depth) {
-    BatchKernel<L, true>::run(v, lim);
+    SatOverLanes<L, true>::run(v, lim);
   } else {
-    BatchKernel<L, false>::run(v, lim);
+    SatOverLanes<L, false>::run(v, lim);
   }
 }
 

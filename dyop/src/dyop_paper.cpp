@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "detail/finish.hpp"
+#include "detail/fill_result.hpp"
 #include "detail/pivot.hpp"
 
 namespace dyop {
@@ -11,12 +11,12 @@ template <class T>
 PaperLinesOrError<T> paper_lines(const Vec2<T>& p, const Vec2<T>& q, const Vec2<T>& x) {
   PaperLinesOrError<T> out;
   if (p.x() == q.x()) {
-    out.reason = "vertical edge: slope-intercept form (paper eq. 3) has no slope";
+    out.reason = InvalidReason::PaperVerticalEdge;
     return out;
   }
   const T p_norm = std::sqrt(p.x() * p.x() + p.y() * p.y());
   if (!(p_norm > 0)) {
-    out.reason = "edge vertex P at the origin: paper eq. 8 divides by |P| = 0";
+    out.reason = InvalidReason::PaperVertexAtOrigin;
     return out;
   }
   PaperLines<T>& l = out.lines;
@@ -27,7 +27,7 @@ PaperLinesOrError<T> paper_lines(const Vec2<T>& p, const Vec2<T>& q, const Vec2<
   l.depth_eq8 = l.m == 0 ? l.c - l.c_vertex : dc / p_norm;  // eq. 7, eq. 8
   l.true_distance = dc / std::sqrt(1 + l.m * l.m);
   if (!std::isfinite(l.m) || !std::isfinite(l.depth_eq8)) {
-    out.reason = "slope overflows: edge too steep for slope-intercept form";
+    out.reason = InvalidReason::PaperSlopeOverflow;
     out.lines = {};
   }
   return out;
@@ -53,7 +53,7 @@ bool inside_by_areas(const Triangle<T>& t, const Vec2<T>& p) {
 // One direction: the pivot vertex of `from` against the pivot edge of `into`, world coordinates.
 template <class T>
 struct PaperDirection {
-  const char* reason = nullptr;
+  InvalidReason reason = InvalidReason::None;  // None when this direction could be computed
   bool inside = false;
   T signed_depth = 0;  // eq. 7/8 magnitude, negative when the vertex is outside the edge line
   int edge = 0;        // CCW edge of `into`
@@ -71,7 +71,7 @@ PaperDirection<T> paper_direction(const Triangle<T>& from, const std::array<Vec2
   const Vec2<T>& q = into.vertex(detail::next3(d.edge));
   const Vec2<T>& x = from.vertex(d.vertex);
   const PaperLinesOrError<T> lines = paper_lines(p, q, x);
-  if (lines.reason) {
+  if (!lines.ok()) {
     d.reason = lines.reason;
     return d;
   }
@@ -94,9 +94,10 @@ Result<T> dyop_paper(const Triangle<T>& a, const Triangle<T>& b, const Query<T>&
   const Vec2<T> pivot = detail::pivot_point(f);
   const PaperDirection<T> ab = paper_direction(a, f.a, b, f.b, pivot);
   const PaperDirection<T> ba = paper_direction(b, f.b, a, f.a, pivot);
-  if (ab.reason || ba.reason) {
+  const InvalidReason reason = ab.reason != InvalidReason::None ? ab.reason : ba.reason;
+  if (reason != InvalidReason::None) {
     Result<T> invalid;
-    invalid.reason = ab.reason ? ab.reason : ba.reason;
+    invalid.reason = reason;
     return invalid;
   }
   const detail::AxisOverlap<T> a_into_b{3 + ab.edge, ab.signed_depth, ab.vertex};

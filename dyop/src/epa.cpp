@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "detail/finish.hpp"
+#include "detail/fill_result.hpp"
 
 namespace dyop {
 namespace {
@@ -347,7 +347,7 @@ Result<T> epa(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query)
     nearest = poly.closest();
   }
   const T depth = poly.dist[nearest];
-  r.status = detail::classify(depth, band);
+  r.status = detail::status_of_overlap(depth, band);
   if (query.level == Level::Overlap) return r;
   // EPA's own depth and normal are reported; the candidate axis nearest to its normal only
   // names the features, the witnesses and the manifold's reference face.

@@ -7,7 +7,7 @@
 #include <limits>
 #include <utility>
 
-#include "detail/finish.hpp"
+#include "detail/fill_result.hpp"
 
 namespace dyop {
 namespace {

@@ -15,7 +15,7 @@ Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b, const 
   const PairFunction<T> run = info(m).run<T>();
   if (run == nullptr) {
     Result<T> invalid;
-    invalid.reason = "not a per-pair method: see dyop::pair_methods";
+    invalid.reason = InvalidReason::NotPairMethod;
     return invalid;
   }
   return run(a, b, query, cache);

@@ -30,12 +30,14 @@ struct PaperLines {
   T true_distance = 0; ///< the correct line distance |C_i − C_PQ| / sqrt(1 + M²)
 };
 
-/// Eqs. 3–8 for vertex `x` against the line through `p` and `q`. `ok` is false (and the numbers
-/// zero) for a vertical line, or when eq. 8 would divide by zero (p at the origin).
+/// Eqs. 3–8 for vertex `x` against the line through `p` and `q`. `ok()` is false (and the numbers
+/// zero) for a vertical line, when eq. 8 would divide by zero (p at the origin), or when the
+/// slope or eq. 8's value is not finite.
 template <class T>
 struct PaperLinesOrError {
-  const char* reason = nullptr;  ///< nullptr when the numbers are valid
-  PaperLines<T> lines;
+  InvalidReason reason = InvalidReason::None;  ///< None when the numbers are valid
+  PaperLines<T> lines;                         ///< valid only when `reason == None`
+  bool ok() const { return reason == InvalidReason::None; }
 };
 
 template <class T>

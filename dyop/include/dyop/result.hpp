@@ -23,6 +23,20 @@ namespace dyop {
 /// (`touching_tolerance`), so the closed triangles meet but neither overlaps the other.
 enum class Status : std::uint8_t { Separated, Touching, Penetrating, Invalid };
 
+/// Why a method answered `Status::Invalid`, for a caller to branch on (`describe` spells it out).
+enum class InvalidReason : std::uint8_t {
+  None,                ///< the result is not Invalid (or no method ran: a default `Result`)
+  NotPairMethod,       ///< `penetrate` was given a method with no per-pair entry (`Batch`, `Box2D`)
+  PaperVerticalEdge,   ///< `dyop_paper`: a vertical pivot edge has no slope (paper eq. 3)
+  PaperVertexAtOrigin, ///< `dyop_paper`: the pivot edge's P at the origin (eq. 8 divides by |P|)
+  PaperSlopeOverflow,  ///< `dyop_paper`: the pivot edge too steep, its slope or depth not finite
+  Box2DNonFinite,      ///< Box2D's answer (`box2d::collide_triangles`) not finite: coordinates
+                       ///< too large for its float arithmetic
+};
+
+/// A static, human-readable description of `r` ("unknown method", ...).
+const char* describe(InvalidReason r);
+
 /// How much a caller wants; a method computes nothing beyond the level asked for.
 enum class Level : std::uint8_t {
   Overlap,   ///< `status` only; a method may exit at the first separating axis
@@ -70,16 +84,16 @@ struct Feature {
   std::uint8_t index = 0;  ///< caller's vertex index, or caller's edge index (edge i: vertex i→i+1)
 };
 
-/// Which end of the reference face clipped a manifold point (part of its key).
-enum class ClipSide : std::uint8_t { None, Start, End };
-
 /// One contact point of a manifold.
 template <class T>
 struct ManifoldPoint {
   Vec2<T> point = Vec2<T>::Zero();  ///< world; on the incident triangle's edge (after clipping)
   T separation = 0;  ///< signed distance from the reference face line, negative when penetrating
   /// Feature pair that made the point, stable from frame to frame while the same features touch
-  /// (warm starting matches on it): reference side and edge, incident vertex or clipped edge.
+  /// (warm starting matches on it). It encodes which triangle holds the reference face, the
+  /// caller's index of the reference edge, the caller's index of the incident vertex (point not
+  /// clipped) or incident edge (point clipped), and which end of the reference face clipped the
+  /// point (none, start or end). Compare keys for equality only; the layout is not part of the API.
   std::uint32_t key = 0;
 };
 
@@ -100,8 +114,7 @@ struct Manifold {
 template <class T>
 struct Result {
   Status status = Status::Invalid;  ///< always valid
-  /// Invalid only: a static string naming what the method could not handle; nullptr otherwise.
-  const char* reason = nullptr;
+  InvalidReason reason = InvalidReason::None;  ///< Invalid only: why (`describe`); None otherwise
   /// Level ≥ Depth, not Invalid: signed; `-depth` when penetrating, the distance when apart
   /// (with `Apart::Gap`, the exact methods give a lower bound on it: the largest axis gap).
   T separation = 0;

@@ -63,8 +63,10 @@ template <class T>
 void penetrate_row_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth,
                             std::size_t row);
 
+// `sat`'s status (and with kDepth its separation and normal) for `L::kWidth` pairs at a time: the
+// algorithm itself, run with the portable or the AVX2 lanes as `dyop::BatchKernel` chooses.
 template <class L, bool kDepth>
-struct BatchKernel {
+struct SatOverLanes {
   using T = typename L::T;
   using V = typename L::V;
   using M = typename L::M;

@@ -6,7 +6,7 @@
 // cheaper than trying the axes one by one in any order. `find` locates the closest features of a
 // pair found apart (dyop passes its pivot's guess, certified; sat passes the full search).
 
-#include "detail/finish.hpp"
+#include "detail/fill_result.hpp"
 
 namespace dyop::detail {
 
@@ -18,7 +18,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
   Result<T> r;
   const T band = touching_band(f);
-  r.status = classify(overlap[least], band);
+  r.status = status_of_overlap(overlap[least], band);
   // A gap inside the band proves only that the pair does not overlap: along an edge normal it can
   // be far less than the distance (two slivers end to end), so the distance decides.
   const bool gap_in_band = r.status == Status::Touching && overlap[least] < 0;

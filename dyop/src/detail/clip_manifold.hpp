@@ -15,6 +15,10 @@
 
 namespace dyop::detail {
 
+// Which side line of the reference face clipped a manifold point (None: the point is an incident
+// vertex itself); part of the point's key.
+enum class ClipSide : std::uint8_t { None, Start, End };
+
 // Key layout: byte 0 reference side (0: A, 1: B), byte 1 caller's reference edge, byte 2 caller's
 // incident vertex (unclipped) or incident edge (clipped), byte 3 the ClipSide.
 inline std::uint32_t contact_key(bool reference_is_b, int ref_edge, int incident, ClipSide side) {

@@ -1,6 +1,7 @@
 #pragma once
-// Internal: turning a method's chosen axis (or a proof of separation) into a `Result`, computing
-// only what the query's level asks for. One set of helpers serves every method.
+// Internal: filling a method's `Result` from what it found (the axis it settled on, or a proof
+// of separation), computing only what the query's level asks for. One set of helpers serves
+// every method.
 
 #include "detail/axis_overlap.hpp"
 #include "detail/clip_manifold.hpp"
@@ -16,7 +17,7 @@ inline T touching_band(const PairFrame<T>& f) {
 
 // Status of a signed overlap (positive: penetrating) against the touching band.
 template <class T>
-inline Status classify(T overlap, T band) {
+inline Status status_of_overlap(T overlap, T band) {
   if (overlap > band) return Status::Penetrating;
   if (overlap >= -band) return Status::Touching;
   return Status::Separated;
@@ -122,7 +123,7 @@ void fill_manifold(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T
 template <class T>
 Result<T> answer_from_axis(const PairFrame<T>& f, const Query<T>& q, const AxisOverlap<T>& ax) {
   Result<T> r;
-  r.status = classify(ax.overlap, touching_band(f));
+  r.status = status_of_overlap(ax.overlap, touching_band(f));
   fill_from_axis(f, q.level, ax, r);
   fill_manifold(f, q, ax, r);
   return r;
