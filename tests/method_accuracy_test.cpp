@@ -73,22 +73,21 @@ void check_method(Method m, double exact_tol) {
     double below = 0;
     const Figures f = measure<T>(m, c, below);
     ::testing::Test::RecordProperty(std::string(name(m)) + "." + name(c), describe(f));
-    switch (m) {
-      case Method::Dyop:
-      case Method::Sat:
-      case Method::Epa:
+    switch (info(m).accuracy) {
+      case Accuracy::Exact:
+      case Accuracy::ToTolerance:
         EXPECT_EQ(f.invalid, 0) << name(c);
         EXPECT_EQ(f.misclassified, 0) << name(c);
         EXPECT_LE(f.max_error, exact_tol) << name(m) << " " << name(c);
         break;
-      case Method::LinCanny:
+      case Accuracy::LocalDepth:
         // Exact distance apart; a local minimum of overlap is never shallower than the true depth.
         EXPECT_EQ(f.invalid, 0) << name(c);
         EXPECT_EQ(f.misclassified, 0) << name(c);
         EXPECT_LE(below, exact_tol) << name(c);
         break;
-      case Method::DyopFast:
-      case Method::DyopPaper:
+      case Accuracy::AbsoluteTolerance:  // not a per-pair method of the library
+      case Accuracy::Approximate:
         break;  // heuristics: their figures are the result (finiteness is checked per pair)
     }
   }
