@@ -1,4 +1,6 @@
-// Google Benchmark suite: BM_<method>/<class>/<level>/<precision>, one pair per iteration over
+// Google Benchmark suite: BM_<method>/<class>/<level>/<precision> for every row of the method
+// registry (dyop/method.hpp) at every level and precision it has (a warm-startable method as
+// <name>-cold and <name>-warm), one pair per iteration over
 // at least 8192 distinct seeded pairs per class (prepared outside the timed loop), so the branch
 // predictor cannot learn the set. Compare methods by their ratio to BM_box2d/<class>/manifold/float
 // in the same run: the machines are shared and noisy. Batch kernel benchmarks time a whole
@@ -34,16 +36,6 @@ const PairSet<T>& pairs_of(BenchClass c) {
   return it->second;
 }
 
-const char* level_name(Level l) {
-  switch (l) {
-    case Level::Overlap: return "overlap";
-    case Level::Depth: return "depth";
-    case Level::Contact: return "contact";
-    case Level::Manifold: return "manifold";
-  }
-  return "?";
-}
-
 template <class T>
 const char* precision_name() {
   return std::is_same_v<T, float> ? "float" : "double";
@@ -61,18 +53,20 @@ void bm_method(benchmark::State& state, Method m, BenchClass c, Level l) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// Temporal coherence: each pair has its own cache, and every pass over the set alternates between
-// two frames of a small motion, so each query starts from the features of the previous frame.
+// Temporal coherence, for the methods that keep warm-start state: each pair has its own cache,
+// and every pass over the set alternates between two frames of a small motion, so each query
+// starts from the features of the previous frame.
 template <class T>
-void bm_lin_canny_warm(benchmark::State& state, BenchClass c, Level l) {
+void bm_warm(benchmark::State& state, Method m, BenchClass c, Level l) {
   const PairSet<T>& s = pairs_of<T>(c);
   const Query<T> q{l};
   std::vector<LinCannyCache> cache(s.size());
-  for (std::size_t k = 0; k < s.size(); ++k) lin_canny(s.a[k], s.b[k], q, &cache[k]);
+  for (std::size_t k = 0; k < s.size(); ++k) penetrate(m, s.a[k], s.b[k], q, &cache[k]);
   std::size_t i = 0;
   bool next_frame = true;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(lin_canny(s.a[i], next_frame ? s.b_next[i] : s.b[i], q, &cache[i]));
+    benchmark::DoNotOptimize(
+        penetrate(m, s.a[i], next_frame ? s.b_next[i] : s.b[i], q, &cache[i]));
     if (++i == s.size()) {
       i = 0;
       next_frame = !next_frame;
@@ -195,25 +189,38 @@ void register_streams() {
 }
 #endif
 
+// Every benchmark of one row of the registry in precision T.
 template <class T>
-void register_precision() {
+void register_method(const MethodInfo& row) {
+  if (!row.runs_double && !std::is_same_v<T, float>) return;
   for (BenchClass c : workloads::all_bench_classes) {
-    for (Level l : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
-      const std::string tail = std::string("/") + workloads::name(c) + "/" + level_name(l) + "/" +
+    for (Level l : all_levels) {
+      if (!row.has(l)) continue;
+      const std::string tail = std::string("/") + workloads::name(c) + "/" + name(l) + "/" +
                                precision_name<T>();
-      for (Method m : pair_methods) {
-        benchmark::RegisterBenchmark(("BM_" + std::string(name(m)) + tail).c_str(), bm_method<T>,
-                                     m, c, l);
-      }
-      benchmark::RegisterBenchmark(("BM_lin-canny-warm" + tail).c_str(), bm_lin_canny_warm<T>, c,
-                                   l);
-      if (l == Level::Overlap || l == Level::Depth) {
-        benchmark::RegisterBenchmark(("BM_batch" + tail).c_str(), bm_batch<T>, c, l, 0);
-        if (c == BenchClass::Overlapping || c == BenchClass::Mixed) {
-          // Streaming: 1M pairs, far beyond the caches (the memory floor).
-          benchmark::RegisterBenchmark(("BM_batch-stream-1M" + tail).c_str(), bm_batch<T>, c, l,
-                                       std::size_t{1} << 20);
-        }
+      const auto bm = [&](const char* spelling) { return "BM_" + std::string(spelling) + tail; };
+      switch (row.entry) {
+        case Entry::PerPair:
+          benchmark::RegisterBenchmark(bm(variant_name(row.method, false)).c_str(), bm_method<T>,
+                                       row.method, c, l);
+          if (row.warm_start) {
+            benchmark::RegisterBenchmark(bm(variant_name(row.method, true)).c_str(), bm_warm<T>,
+                                         row.method, c, l);
+          }
+          break;
+        case Entry::Batch:
+          benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_batch<T>, c, l, 0);
+          if (c == BenchClass::Overlapping || c == BenchClass::Mixed) {
+            // Streaming: 1M pairs, far beyond the caches (the memory floor).
+            benchmark::RegisterBenchmark(bm((std::string(row.name) + "-stream-1M").c_str()).c_str(),
+                                         bm_batch<T>, c, l, std::size_t{1} << 20);
+          }
+          break;
+        case Entry::Box2D:
+#ifdef DYOP_WITH_BOX2D
+          benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_box2d, c);
+#endif
+          break;
       }
     }
   }
@@ -222,15 +229,13 @@ void register_precision() {
 }  // namespace
 
 int main(int argc, char** argv) {
-#ifdef DYOP_WITH_BOX2D
-  for (BenchClass c : workloads::all_bench_classes) {
-    benchmark::RegisterBenchmark(
-        (std::string("BM_box2d/") + workloads::name(c) + "/manifold/float").c_str(), bm_box2d, c);
+  for (const MethodInfo& row : method_table) {
+    register_method<float>(row);
+    register_method<double>(row);
   }
+#ifdef DYOP_WITH_BOX2D
   register_streams();
 #endif
-  register_precision<float>();
-  register_precision<double>();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

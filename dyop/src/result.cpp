@@ -2,6 +2,16 @@
 
 namespace dyop {
 
+const char* name(Level level) {
+  switch (level) {
+    case Level::Overlap: return "overlap";
+    case Level::Depth: return "depth";
+    case Level::Contact: return "contact";
+    case Level::Manifold: return "manifold";
+  }
+  return "unknown";
+}
+
 const char* describe(InvalidReason r) {
   switch (r) {
     case InvalidReason::None: return "no reason: the result is not Invalid";

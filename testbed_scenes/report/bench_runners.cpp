@@ -107,16 +107,6 @@ const char* name(Runner r) {
   return "unknown";
 }
 
-const char* name(Level l) {
-  switch (l) {
-    case Level::Overlap: return "overlap";
-    case Level::Depth: return "depth";
-    case Level::Contact: return "contact";
-    case Level::Manifold: return "manifold";
-  }
-  return "unknown";
-}
-
 bool supports(Runner r, Level level, bool is_float) {
   switch (r) {
     case Runner::Box2D:

@@ -22,9 +22,6 @@ inline constexpr Runner all_runners[] = {
 /// "batch".
 const char* name(Runner r);
 
-/// "overlap", "depth", "contact", "manifold".
-const char* name(Level l);
-
 /// Whether `r` runs at `level` in float (`is_float`) or double: Box2D always builds its full
 /// manifold, in float, and is timed at `Manifold` only; the batch kernel has `Overlap` and
 /// `Depth`; Box2D is absent from builds without Box2D.

@@ -76,8 +76,9 @@ constexpr std::uint8_t level_bit(Level level) {
 }
 
 /// Every query level.
-inline constexpr std::uint8_t all_levels = level_bit(Level::Overlap) | level_bit(Level::Depth) |
-                                           level_bit(Level::Contact) | level_bit(Level::Manifold);
+inline constexpr std::uint8_t all_level_bits =
+    level_bit(Level::Overlap) | level_bit(Level::Depth) | level_bit(Level::Contact) |
+    level_bit(Level::Manifold);
 
 /// One row of the registry.
 struct MethodInfo {
@@ -135,27 +136,27 @@ Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& 
 inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_levels, true, false, true, Accuracy::Exact,
+     all_level_bits, true, false, true, Accuracy::Exact,
      &detail::stateless<float, &dyop<float>>, &detail::stateless<double, &dyop<double>>},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
-     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_levels, true, false,
-     true, Accuracy::Approximate, &detail::stateless<float, &dyop_fast<float>>,
+     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits, true,
+     false, true, Accuracy::Approximate, &detail::stateless<float, &dyop_fast<float>>,
      &detail::stateless<double, &dyop_fast<double>>},
     {Method::DyopPaper, "dyop-paper", nullptr, nullptr,
-     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_levels, true,
+     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_level_bits, true,
      false, false, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
      &detail::stateless<double, &dyop_paper<double>>},
     {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
      "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
-     Entry::PerPair, all_levels, true, true, true, Accuracy::LocalDepth, &lin_canny<float>,
+     Entry::PerPair, all_level_bits, true, true, true, Accuracy::LocalDepth, &lin_canny<float>,
      &lin_canny<double>},
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
-     Entry::PerPair, all_levels, true, false, true, Accuracy::Exact,
+     Entry::PerPair, all_level_bits, true, false, true, Accuracy::Exact,
      &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
-     all_levels, true, false, true, Accuracy::ToTolerance, &detail::stateless<float, &epa<float>>,
-     &detail::stateless<double, &epa<double>>},
+     all_level_bits, true, false, true, Accuracy::ToTolerance,
+     &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},
     {Method::Batch, "batch", nullptr, nullptr,
      "sat's answer over structure-of-arrays input, AVX2 when the CPU has it", Entry::Batch,
      static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)), true, false,

@@ -45,6 +45,13 @@ enum class Level : std::uint8_t {
   Manifold,  ///< + up to two clipped contact points (as Box2D's solver needs)
 };
 
+/// Every level, shallowest first.
+inline constexpr Level all_levels[] = {Level::Overlap, Level::Depth, Level::Contact,
+                                                Level::Manifold};
+
+/// "overlap", "depth", "contact", "manifold": the spelling in tables, CSV and benchmark names.
+const char* name(Level level);
+
 /// What a query at `Level::Depth` or above reports for a pair found apart.
 enum class Apart : std::uint8_t {
   /// The Euclidean distance, its direction and (`Level::Contact` and above) the closest points
