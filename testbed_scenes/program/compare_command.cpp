@@ -1,14 +1,63 @@
-// `dyop compare`: registration of the subcommand; the command itself is scenes/compare.
+// `dyop compare`: the command (the run is scenes/compare, the report report/compare_report) and
+// its registration.
+#include "program/compare_command.hpp"
+
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
-#include "scenes/compare.hpp"
+#include "program/commands.hpp"
+#include "report/compare_report.hpp"
+#include "report/format.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
+
+// The command is about scenes throughout; their names read better unqualified.
+using namespace dyop::scenes;
+using scenes::detail::fmt;
+
+int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err) {
+  // Fail before the long run if the report cannot be written.
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  const std::string probe = options.out_dir + "/report.md";
+  if (ec || !std::ofstream(probe, std::ios::app)) {
+    err << "dyop compare: cannot write to '" << options.out_dir << "'"
+        << (ec ? ": " + ec.message() : std::string()) << '\n';
+    return exit_io_error;
+  }
+  CompareRun run;
+  try {
+    run = run_compare(options, err);
+  } catch (const std::exception& e) {
+    err << "dyop compare: " << e.what() << '\n';
+    return exit_io_error;
+  }
+  write_compare_table(run, out);
+  if (!run.in_world.empty()) {
+    out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
+    write_in_world_table(run.in_world, out);
+  }
+  if (!run.skips.empty()) {
+    out << "\nSkipping what a scene doesn't need:\n\n";
+    write_skip_tables(run, out);
+  }
+  if (run.paper) {
+    out << "\nThe paper's experiment (scene `paper`):\n\n";
+    write_paper_tables(*run.paper, out);
+  }
+  const ReportOutcome report = write_report(run);
+  for (const std::string& w : report.warnings) err << "dyop compare: warning: " << w << '\n';
+  for (const std::string& e : report.errors) err << "dyop compare: " << e << '\n';
+  out << "\nreport: " << options.out_dir << "/report.md (run took " << fmt("%.1f", run.seconds)
+      << " s)\n";
+  return report.errors.empty() ? exit_success : exit_io_error;
+}
+
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<scenes::CompareOptions>();
@@ -39,7 +88,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->callback([options, steps, steps_option, skip, &exit_code] {
     if (steps_option->count() > 0) options->steps = *steps;
     options->skips = scenes::parse_skips(*skip).config;
-    exit_code = scenes::run_compare_command(*options, std::cout, std::cerr);
+    exit_code = run_compare_command(*options, std::cout, std::cerr);
   });
 }
 
