@@ -1,3 +1,5 @@
+// `dyop scene`: the command (one scene under one backend, its summary, JSON and SVG) and its
+// registration.
 #include "program/scene_command.hpp"
 
 #include <fstream>
@@ -110,6 +112,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   }
   return exit_success;
 }
+
 void add_scene_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneCommand>();
   auto steps = std::make_shared<int>(0);

@@ -7,14 +7,6 @@
 
 namespace dyop::scenes::paper {
 
-using detail::band_of;
-using detail::exact_of;
-using detail::Fn;
-using detail::fn_of;
-using detail::Job;
-using detail::pair_index;
-using detail::time_jobs;
-
 Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   Experiment e;
   e.seed = seed;

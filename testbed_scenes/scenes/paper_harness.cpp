@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
-namespace dyop::scenes::paper::detail {
+namespace dyop::scenes::paper {
 namespace {
 
 // The result of summing depths is stored here so that the timed calls cannot be optimised away.
@@ -40,4 +40,4 @@ double band_of(const Triangle<float>& a, const Triangle<float>& b) {
   return static_cast<double>(touching_tolerance<float>()) * std::max(a.size(), b.size());
 }
 
-}  // namespace dyop::scenes::paper::detail
+}  // namespace dyop::scenes::paper

@@ -8,7 +8,7 @@
 #include "exact_reference/exact_reference.hpp"
 #include "scenes/paper.hpp"
 
-namespace dyop::scenes::paper::detail {
+namespace dyop::scenes::paper {
 
 // Every method behind one signature, so that all are called alike (one indirect call each).
 using Fn = Result<float> (*)(const Triangle<float>&, const Triangle<float>&, LinCannyCache*);
@@ -36,4 +36,4 @@ workloads::ExactAnswer exact_of(const Triangle<float>& a, const Triangle<float>&
 /// The touching band of a pair: `touching_tolerance` scaled by the larger triangle.
 double band_of(const Triangle<float>& a, const Triangle<float>& b);
 
-}  // namespace dyop::scenes::paper::detail
+}  // namespace dyop::scenes::paper

@@ -42,7 +42,7 @@ Result<float> run_box2d(const Triangle<float>& a, const Triangle<float>& b, LinC
 
 }  // namespace
 
-detail::Fn detail::fn_of(Method m) {
+Fn fn_of(Method m) {
   switch (m) {
     case Method::Dyop: return run_dyop;
     case Method::DyopFast: return run_dyop_fast;

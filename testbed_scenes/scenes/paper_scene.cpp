@@ -8,14 +8,6 @@
 namespace dyop::scenes::paper {
 namespace {
 
-using detail::band_of;
-using detail::exact_of;
-using detail::Fn;
-using detail::fn_of;
-using detail::Job;
-using detail::pair_index;
-using detail::time_jobs;
-
 double area_of(const TriangleType& t) {
   return 0.5 * std::abs(cross<double>(t[1] - t[0], t[2] - t[0]));
 }
