@@ -16,6 +16,7 @@
 #include "dyop/method.hpp"
 #include "workloads/pair_sets.hpp"
 #ifdef DYOP_WITH_BOX2D
+#include "box2d_reference/box2d_pair_set.hpp"
 #include "scenes/contact_stream.hpp"
 #endif
 

@@ -1,5 +1,6 @@
-// libFuzzer target for the pair CSV reader and `dyop pairs`' processing (pair_csv.hpp,
-// pairs_command.hpp): any bytes as the input file, every backend, both precisions, CSV and table.
+// libFuzzer target for the pair CSV reader and `dyop pairs`' processing (program/pair_csv.hpp,
+// program/pairs_command.hpp): any bytes as the input file, every backend, both precisions, CSV
+// and table.
 //
 // What it asserts, besides "no crash, no sanitizer report" (and no Box2D assert: the plug-in's
 // `collide_triangles` runs on whatever the reader accepts):
@@ -13,8 +14,8 @@
 #include <sstream>
 #include <string>
 
-#include "pair_csv.hpp"
-#include "pairs_command.hpp"
+#include "program/pair_csv.hpp"
+#include "program/pairs_command.hpp"
 
 namespace dyop::fuzz {
 namespace {

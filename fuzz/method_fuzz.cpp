@@ -24,7 +24,7 @@
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "fuzz_input.hpp"
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 #include "workloads/finite_fields.hpp"
 
 namespace dyop::fuzz {

@@ -13,7 +13,7 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/sat.hpp"
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 #include "workloads/pair_classes.hpp"
 
 namespace dyop {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "pair_csv.hpp"
-#include "pairs_command.hpp"
+#include "program/pair_csv.hpp"
+#include "program/pairs_command.hpp"
 
 namespace dyop::cli {
 namespace {

@@ -16,9 +16,9 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
-#include "pair_csv.hpp"
-#include "pairs_command.hpp"
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
+#include "program/pair_csv.hpp"
+#include "program/pairs_command.hpp"
 #include "workloads/stress_classes.hpp"
 #include "support/scalars.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "dyop/dyop.hpp"
 #include "dyop/sat.hpp"
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 
 namespace dyop::workloads {
 namespace {

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "dyop/method.hpp"
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 #include "workloads/stress_classes.hpp"
 
 namespace dyop::workloads {

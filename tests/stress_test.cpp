@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "dyop/method.hpp"
+#include "exact_reference/exact_reference.hpp"
 #include "report/stress_report.hpp"
-#include "workloads/exact_reference.hpp"
 
 namespace dyop::report {
 namespace {

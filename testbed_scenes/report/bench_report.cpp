@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "dyop/sat.hpp"
-#include "report/bench_runners.hpp"
+#include "exact_reference/exact_reference.hpp"
+#include "measure/bench_runners.hpp"
 #include "report/gnuplot.hpp"
-#include "workloads/exact_reference.hpp"
 
 namespace dyop::report {
 namespace {

@@ -3,10 +3,10 @@
 /// `dyop bench`: run time against error for every runner, input class, query level and precision,
 /// with every time also given as a ratio to Box2D's `b2CollidePolygons` measured in the same run.
 ///
-/// Error is measured against the exact rational reference (`workloads/exact_reference.hpp`) on
-/// the pairs exactly as the precision sees them (float runs get float-rounded input), at
-/// `Level::Depth`: |depth − exact depth| relative to the pair's size (the diagonal of the union of
-/// both bounding boxes). The same error figures stand on every level's record of a runner.
+/// Error is measured against the exact rational reference (`exact_reference/exact_reference.hpp`)
+/// on the pairs exactly as the precision sees them (float runs get float-rounded input), at
+/// `Level::Depth`: |depth − exact depth| relative to the pair's size (the diagonal of the union
+/// of both bounding boxes). The same error figures stand on every level's record of a runner.
 
 #include <iosfwd>
 #include <string>

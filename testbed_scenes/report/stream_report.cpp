@@ -5,8 +5,8 @@
 #include <ostream>
 #include <sstream>
 
+#include "report/format.hpp"
 #include "report/gnuplot.hpp"
-#include "scenes/format.hpp"
 
 namespace dyop::report {
 namespace {

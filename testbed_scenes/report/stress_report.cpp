@@ -9,7 +9,7 @@
 #include <random>
 #include <type_traits>
 
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 
 namespace dyop::report {
 namespace {

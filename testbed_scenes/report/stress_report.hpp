@@ -3,8 +3,9 @@
 /// `dyop stress`: numerical stability on hostile input, as figures per runner, input category
 /// and precision.
 ///
-/// Every figure is measured against the exact rational reference (`workloads/exact_reference.hpp`)
-/// on the pairs exactly as the precision sees them (float runs get float-rounded input):
+/// Every figure is measured against the exact rational reference
+/// (`exact_reference/exact_reference.hpp`) on the pairs exactly as the precision sees them (float
+/// runs get float-rounded input):
 /// - error: |separation − exact separation| / pair size (separation is −depth when penetrating,
 ///   the distance when apart; size is the diagonal of the union of both bounding boxes);
 /// - misclassified: the status is not the exact one (Penetrating below −band, Separated above
@@ -19,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "report/stress_runners.hpp"
+#include "measure/stress_runners.hpp"
 #include "workloads/stress_classes.hpp"
 
 namespace dyop::report {

@@ -1,5 +1,6 @@
 #include "scenes/backend_depth.hpp"
 
+#include "box2d_reference/collide_triangles.hpp"
 #include "dyop/method.hpp"
 
 namespace dyop::scenes {

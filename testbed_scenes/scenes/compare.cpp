@@ -6,7 +6,7 @@
 #include <fstream>
 #include <ostream>
 
-#include "scenes/format.hpp"
+#include "report/format.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -320,44 +320,6 @@ void write_paper_tables(const paper::Experiment& e, std::ostream& out) {
       << ", cold / dyop = " << fmt("%.2f", cold.us_total / dyop.us_total)
       << "; the paper's literal method (dyop-paper) against warm Lin–Canny: "
       << fmt("%.2f", warm.us_total / figures(paper::Method::DyopPaper).us_total) << ".\n";
-}
-
-int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err) {
-  // Fail before the long run if the report cannot be written.
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  const std::string probe = options.out_dir + "/report.md";
-  if (ec || !std::ofstream(probe, std::ios::app)) {
-    err << "dyop compare: cannot write to '" << options.out_dir << "'"
-        << (ec ? ": " + ec.message() : std::string()) << '\n';
-    return 2;
-  }
-  CompareRun run;
-  try {
-    run = run_compare(options, err);
-  } catch (const std::exception& e) {
-    err << "dyop compare: " << e.what() << '\n';
-    return 2;
-  }
-  write_compare_table(run, out);
-  if (!run.in_world.empty()) {
-    out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
-    write_in_world_table(run.in_world, out);
-  }
-  if (!run.skips.empty()) {
-    out << "\nSkipping what a scene doesn't need:\n\n";
-    write_skip_tables(run, out);
-  }
-  if (run.paper) {
-    out << "\nThe paper's experiment (scene `paper`):\n\n";
-    write_paper_tables(*run.paper, out);
-  }
-  const ReportOutcome report = write_report(run);
-  for (const std::string& w : report.warnings) err << "dyop compare: warning: " << w << '\n';
-  for (const std::string& e : report.errors) err << "dyop compare: " << e << '\n';
-  out << "\nreport: " << options.out_dir << "/report.md (run took " << fmt("%.1f", run.seconds)
-      << " s)\n";
-  return report.errors.empty() ? 0 : 2;
 }
 
 }  // namespace dyop::scenes

@@ -1,10 +1,11 @@
 #pragma once
 /// \file
-/// `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`: every scene under every backend,
-/// one table with the scene figures and each backend's narrow-phase time as a ratio to `box2d`'s
-/// in the same run, the paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every
-/// skip off and on), and a report directory: `report.md`, the CSVs behind it, gnuplot charts
-/// (time per method, time against error, Figure 7) and a snapshot of each scene.
+/// The run of all scenes behind `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`
+/// (`program/compare_command.hpp`): every scene under every backend, one table with the scene
+/// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, the
+/// paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every skip off and on).
+/// The report directory (`report.md`, the CSVs behind it, gnuplot charts and a snapshot of each
+/// scene) is written by `report/compare_report.hpp`.
 
 #include <array>
 #include <cstdint>
@@ -111,19 +112,5 @@ void write_skip_tables(const CompareRun& run, std::ostream& out);
 
 /// The Figure-7 table and the per-method summary of the paper experiment (Markdown).
 void write_paper_tables(const paper::Experiment& e, std::ostream& out);
-
-/// What became of the report.
-struct ReportOutcome {
-  std::vector<std::string> errors;    ///< files that could not be written (report.md, CSVs, SVGs)
-  std::vector<std::string> warnings;  ///< charts not drawn (gnuplot missing or failing)
-};
-
-/// Writes the report directory (created if needed): the tables, CSVs and snapshots whatever
-/// happens to the charts.
-ReportOutcome write_report(const CompareRun& run);
-
-/// The whole command: checks that the directory is writable first (exit 2 if not), runs, prints
-/// the tables to `out` and progress and problems to `err`, writes the report and says where.
-int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace dyop::scenes

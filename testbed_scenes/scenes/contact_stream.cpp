@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "report/format.hpp"
 #include "scenes/builders.hpp"
 #include "scenes/contact_probe.hpp"
-#include "scenes/format.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 

@@ -3,7 +3,7 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "scenes/format.hpp"
+#include "report/format.hpp"
 
 namespace dyop::scenes {
 namespace {

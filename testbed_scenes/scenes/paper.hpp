@@ -18,8 +18,8 @@
 /// `Apart::Gap` (the paper asks for depths: a pair apart needs only the proof that it is; the
 /// methods that find the distance on their way, Lin–Canny and EPA, still do). The
 /// paper's "n-body" literally tests all 45 pairs; that figure is also reported.
-/// Errors are against the exact rational reference (`workloads/exact_reference.hpp`) on the same
-/// float vertices.
+/// Errors are against the exact rational reference (`exact_reference/exact_reference.hpp`) on the
+/// same float vertices.
 
 #include <array>
 #include <cstdint>

@@ -10,11 +10,6 @@
 #include "dyop/method.hpp"
 #include "workloads/bench_classes.hpp"
 
-#ifdef DYOP_WITH_BOX2D
-#include <box2d/b2_collision.h>
-#include <box2d/b2_polygon_shape.h>
-#endif
-
 namespace dyop::workloads {
 
 /// One bench class in precision T. Pairs whose triangles are invalid in T (a float-degenerate
@@ -30,17 +25,6 @@ struct PairSet {
 
 template <class T>
 PairSet<T> make_pair_set(BenchClass c, int count, std::uint64_t seed);
-
-#ifdef DYOP_WITH_BOX2D
-/// The same pairs as Box2D bodies would hold them: each triangle a `b2PolygonShape` about its own
-/// centroid (skin radius 0), placed by a translation.
-struct Box2DPairSet {
-  std::vector<b2PolygonShape> shape_a, shape_b;
-  std::vector<b2Transform> xf_a, xf_b;
-  std::size_t size() const { return shape_a.size(); }
-};
-Box2DPairSet make_box2d_pair_set(const PairSet<float>& set);
-#endif
 
 extern template PairSet<float> make_pair_set(BenchClass, int, std::uint64_t);
 extern template PairSet<double> make_pair_set(BenchClass, int, std::uint64_t);

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <random>
 
+#include "box2d_reference/collide_triangles.hpp"
 #include "dyop/sat.hpp"
 #include "scene.hpp"
 

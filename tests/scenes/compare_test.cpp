@@ -1,5 +1,6 @@
-// `dyop compare`: a tiny run writes the report, the CSVs behind it, and (with gnuplot) the charts.
-#include "scenes/compare.hpp"
+// `dyop compare` (program/compare_command): a tiny run writes the report, the CSVs behind it,
+// and (with gnuplot) the charts.
+#include "program/compare_command.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -29,7 +30,7 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   options.steps = 3;
   options.out_dir = dir.string();
   std::ostringstream out, err;
-  ASSERT_EQ(run_compare_command(options, out, err), 0) << err.str();
+  ASSERT_EQ(cli::run_compare_command(options, out, err), 0) << err.str();
 
   const int runs = static_cast<int>(scene_catalog().size()) * box2d::backend_count;
   EXPECT_NE(err.str().find("[" + std::to_string(runs) + "/" + std::to_string(runs) + "]"),

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "scenes/rain_scaling.hpp"
+#include "report/rain_scaling_report.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {

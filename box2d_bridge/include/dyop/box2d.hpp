@@ -263,16 +263,4 @@ struct TriangleShape {
 /// turn a bad hull into a 1×1 box. Box2D stores the vertices CCW starting from the rightmost one.
 TriangleShape make_triangle(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2);
 
-/// Box2D's own answer for two triangles, under the library's conventions (`dyop/result.hpp`),
-/// in float: `dyop pairs --method box2d`. Each triangle becomes a `b2PolygonShape` about its own
-/// centroid, placed by a translation (a body whose origin is its centre of mass), with skin radius
-/// 0 (`m_radius = 0`: pure geometry, no speculative margin). Then `b2CollidePolygons`:
-/// - points: Penetrating or Touching; `separation` is the deepest point's, `normal` the manifold's
-///   world normal (A to B), witnesses the deepest point and its projection on the reference face;
-/// - no points: the distance from `b2Distance` (Box2D's GJK), its closest points and iterations;
-///   Separated beyond `touching_tolerance`, else Touching (with a zero normal at distance 0).
-/// Valid fields: those of `Level::Contact` except the features; `manifold` is left empty.
-/// Invalid (with a reason) only if Box2D's float arithmetic gives a non-finite value.
-Result<float> collide_triangles(const Triangle<float>& a, const Triangle<float>& b);
-
 }  // namespace dyop::box2d

@@ -1,4 +1,4 @@
-#include "workloads/exact_reference.hpp"
+#include "exact_reference/exact_reference.hpp"
 
 #include <gmpxx.h>
 

@@ -1,287 +1,21 @@
-// `dyop compare`'s report directory: report.md, the CSVs behind it, the charts and snapshots.
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+// `dyop compare`'s report.md: the tables of the run, the charts drawn and the problems found.
+#include <algorithm>
 #include <thread>
 
-#include "report/gnuplot.hpp"
-#include "scenes/compare.hpp"
-#include "scenes/format.hpp"
+#include "report/compare_report_files.hpp"
+#include "report/format.hpp"
 #include "scenes/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::scenes::detail {
 namespace {
 
-using detail::fmt;
-using detail::metres;
-
-// A path inside a gnuplot single-quoted string ('' stands for one quote).
-std::string gp_quote(const std::string& path) {
-  std::string out = "'";
-  for (char c : path) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-// The errors below this are drawn at this value on the log axis (exact methods have zeros).
-constexpr double kErrorFloor = 1e-9;
-
-class Writer {
+class Markdown {
  public:
-  explicit Writer(const CompareRun& run) : run_(run), dir_(run.options.out_dir) {}
-
-  ReportOutcome write() {
-    write_file("compare.csv", [&](std::ostream& o) { compare_csv(o); });
-    if (!run_.skips.empty()) write_file("skips.csv", [&](std::ostream& o) { skips_csv(o); });
-    if (!run_.in_world.empty()) {
-      write_file("inworld.csv", [&](std::ostream& o) { write_in_world_csv(run_.in_world, o); });
-    }
-    if (run_.paper) {
-      write_file("paper_figure7.csv", [&](std::ostream& o) { figure7_data(o, ','); });
-      write_file("paper_methods.csv", [&](std::ostream& o) { paper_methods_csv(o); });
-    }
-    for (const auto& snapshot : run_.snapshots) {  // not a structured binding: C++17 lambdas
-      write_file("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
-                 [&](std::ostream& o) { write_svg(snapshot.second, o); });
-    }
-    charts();
-    write_file("report.md", [&](std::ostream& o) { report(o); });
-    return outcome_;
-  }
-
- private:
-  std::string path(const std::string& file) const { return dir_ + "/" + file; }
-
-  template <class F>
-  bool write_file(const std::string& file, F&& body) {
-    std::ofstream out(path(file));
-    body(out);
-    out.close();
-    if (!out) {
-      outcome_.errors.push_back("cannot write " + path(file));
-      return false;
-    }
-    return true;
-  }
-
-  void compare_csv(std::ostream& o) const {
-    o << csv_header() << ",ratio_to_box2d\n";
-    for (const SceneMetrics& m : run_.rows) {
-      const std::optional<double> r = ratio_to_box2d(run_, m);
-      o << csv_row(m) << ',' << (r ? fmt("%.6g", *r) : "") << '\n';
-    }
-  }
-
-  // One row per run with skips on (the `--skip` one, then each skip alone) against its `none` run.
-  void skips_csv(std::ostream& o) const {
-    o << "scene,backend,steps,skips,contact_updates_on,contact_updates_off,"
-         "narrowphase_ns_per_pair_on,narrowphase_ns_per_pair_off,narrowphase_ratio,"
-         "narrowphase_ms_on,narrowphase_ms_off,step_ms_median_on,step_ms_median_off,step_ratio,"
-         "hash_on,hash_off,hashes_equal,plugin_evaluations";
-    for (int s = 0; s < box2d::skip_count; ++s) {
-      o << ",skipped_" << box2d::name(static_cast<box2d::Skip>(s));
-    }
-    o << '\n';
-    for (const SkipMeasurement& m : run_.skips) {
-      std::vector<const SceneMetrics*> on = {&m.on};
-      for (const SceneMetrics& a : m.alone) on.push_back(&a);
-      for (const SceneMetrics* r : on) {
-        // A skip list has commas: quoted, as CSV does.
-        o << r->scene << ',' << r->backend << ',' << r->steps << ",\""
-          << (r->skip_config ? skip_argument(*r->skip_config) : "") << "\"," << r->contact_updates
-          << ',' << m.off.contact_updates << ',' << fmt("%.6g", r->narrowphase_ns_per_pair) << ','
-          << fmt("%.6g", m.off.narrowphase_ns_per_pair) << ','
-          << fmt("%.6g", narrowphase_ratio(*r, m.off)) << ','
-          << fmt("%.6g", r->narrowphase_ms_total) << ',' << fmt("%.6g", m.off.narrowphase_ms_total)
-          << ',' << fmt("%.6g", r->step_ms_median) << ',' << fmt("%.6g", m.off.step_ms_median)
-          << ',' << fmt("%.6g", r->step_ms_median / m.off.step_ms_median) << ','
-          << hash_hex(r->hash) << ',' << hash_hex(m.off.hash) << ','
-          << (r->hash == m.off.hash ? "true" : "false") << ',' << r->plugin_evaluations.value_or(0);
-        for (int s = 0; s < box2d::skip_count; ++s) o << ',' << (r->skips ? (*r->skips)[s] : 0);
-        o << '\n';
-      }
-    }
-  }
-
-  // type, size, then one column per method (µs); `sep` ',' for CSV, ' ' for gnuplot.
-  void figure7_data(std::ostream& o, char sep) const {
-    const paper::Experiment& e = *run_.paper;
-    o << "type" << sep << "size" << sep << "pairs";
-    for (const auto& m : e.methods) o << sep << paper::name(m.method);
-    o << '\n';
-    for (int k = 0; k < paper::type_count; ++k) {
-      const auto& t = paper::triangle_types()[k];
-      const double size =
-          std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
-      o << k + 1 << sep << fmt("%.4g", size) << sep << e.pairs_per_type[k];
-      for (const auto& m : e.methods) o << sep << fmt("%.6g", m.us_per_type[k]);
-      o << '\n';
-    }
-  }
-
-  void paper_methods_csv(std::ostream& o) const {
-    const paper::Experiment& e = *run_.paper;
-    o << "method,us_overlapping_pairs,ns_per_pair,us_all_pairs,error_max,error_mean,"
-         "misclassified,invalid,pairs_tested,pairs_penetrating,steps,repetitions\n";
-    for (const auto& m : e.methods) {
-      o << paper::name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
-        << fmt("%.6g", m.ns_per_pair) << ',' << fmt("%.6g", m.us_all_pairs) << ','
-        << fmt("%.6g", m.error_max) << ',' << fmt("%.6g", m.error_mean) << ',' << m.misclassified
-        << ',' << m.invalid << ',' << e.pairs_tested << ',' << e.pairs_penetrating << ',' << e.steps
-        << ',' << e.repetitions << '\n';
-    }
-  }
-
-  std::vector<std::string> scene_names() const {
-    std::vector<std::string> names;
-    for (const SceneMetrics& m : run_.rows) {
-      if (names.empty() || names.back() != m.scene) names.push_back(m.scene);
-    }
-    return names;
-  }
-
-  const SceneMetrics* row(const std::string& scene, const std::string& backend) const {
-    for (const SceneMetrics& m : run_.rows) {
-      if (m.scene == scene && m.backend == backend) return &m;
-    }
-    return nullptr;
-  }
-
-  void chart(const std::string& name, const std::string& script) {
-    const report::ChartResult r = report::run_gnuplot(script, path(name + ".gp"));
-    if (r.ok) {
-      charts_.push_back(name + ".svg");
-    } else {
-      outcome_.warnings.push_back(name + ".svg: " + r.message);
-    }
-  }
-
-  void charts() {
-    const std::string terminal =
-        "set terminal svg size 1000,520 dynamic font 'sans,11' background '#ffffff'\n";
-    // Time per method: clustered bars, scenes along x, one bar per backend.
-    write_file("time_per_method.dat", [&](std::ostream& o) {
-      o << "scene";
-      for (box2d::Backend b : box2d::all_backends) o << ' ' << box2d::name(b);
-      o << '\n';
-      for (const std::string& s : scene_names()) {
-        o << s;
-        for (box2d::Backend b : box2d::all_backends) {
-          const SceneMetrics* m = row(s, box2d::name(b));
-          o << ' ' << (m ? fmt("%.6g", m->narrowphase_ns_per_pair) : "NaN");
-        }
-        o << '\n';
-      }
-    });
-    std::ostringstream bars;
-    bars << terminal << "set output " << gp_quote(path("time_per_method.svg")) << "\n"
-         << "set title 'Narrow-phase time per contact update (Box2D scenes: "
-            "b2ContactManager::Collide; paper: the method alone)'\n"
-         << "set style data histograms\nset style histogram clustered gap 1\n"
-         << "set style fill solid 0.85 border -1\nset logscale y\nset grid ytics\n"
-         << "set ylabel 'ns per pair (log scale)'\nset xtics rotate by -25\n"
-         << "set key outside right top\nset yrange [1:*]\n"
-         << "plot for [i=2:" << box2d::backend_count + 1 << "] "
-         << gp_quote(path("time_per_method.dat")) << " using i:xtic(1) title columnheader(i)\n";
-    chart("time_per_method", bars.str());
-
-    // Time against error: one point per scene and backend, one colour per backend.
-    write_file("time_vs_error.dat", [&](std::ostream& o) {
-      for (box2d::Backend b : box2d::all_backends) {
-        o << "# " << box2d::name(b) << ": ns_per_pair pd_error_max scene\n";
-        for (const SceneMetrics& m : run_.rows) {
-          if (m.backend != box2d::name(b)) continue;
-          o << fmt("%.6g", m.narrowphase_ns_per_pair) << ' '
-            << fmt("%.6g", std::max(m.pd_error_max, kErrorFloor)) << ' ' << m.scene << '\n';
-        }
-        o << "\n\n";
-      }
-    });
-    std::ostringstream scatter;
-    scatter << terminal << "set output " << gp_quote(path("time_vs_error.svg")) << "\n"
-            << "set title 'Narrow-phase time against largest depth error vs exact, per scene "
-               "(errors below "
-            << fmt("%g", kErrorFloor) << " m drawn at " << fmt("%g", kErrorFloor) << ")'\n"
-            << "set logscale xy\nset grid\nset xlabel 'ns per pair'\n"
-            << "set ylabel 'largest |depth - exact depth| (m)'\nset key outside right top\n"
-            << "plot ";
-    for (int i = 0; i < box2d::backend_count; ++i) {
-      scatter << (i ? ", " : "") << gp_quote(path("time_vs_error.dat")) << " index " << i
-              << " using 1:2 with points pt " << 5 + 2 * (i % 3) << " ps 1.3 title '"
-              << box2d::name(box2d::all_backends[i]) << "'";
-    }
-    scatter << '\n';
-    chart("time_vs_error", scatter.str());
-
-    if (!run_.in_world.empty()) in_world_chart();
-    if (!run_.paper) return;
-    write_file("paper_figure7.dat", [&](std::ostream& o) { figure7_data(o, ' '); });
-    std::ostringstream fig;
-    fig << terminal << "set output " << gp_quote(path("paper_figure7.svg")) << "\n"
-        << "set title 'The paper''s Figure 7 rebuilt: time to find the penetration depths of "
-           "each triangle type over "
-        << run_.paper->steps << " steps'\n"
-        << "set xlabel 'triangle type'\nset ylabel 'µs for all steps (median of "
-        << run_.paper->repetitions << " runs)'\nset xtics 1\nset xrange [0.5:10.5]\n"
-        << "set yrange [0:*]\nset grid ytics\nset key outside right top\n"
-        << "plot for [i=4:" << 3 + run_.paper->methods.size() << "] "
-        << gp_quote(path("paper_figure7.dat"))
-        << " using 1:i with linespoints lw 2 pt 7 title columnheader(i)\n";
-    chart("paper_figure7", fig.str());
-  }
-
-  // Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
-  // bar per backend, narrow phase above and step below.
-  void in_world_chart() {
-    std::vector<std::string> backends;
-    for (const InWorldRatio& r : run_.in_world) {
-      if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) {
-        backends.push_back(r.backend);
-      }
-    }
-    auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
-      for (const InWorldRatio& r : run_.in_world) {
-        if (r.scene == scene && r.backend == backend) {
-          return fmt("%.6g", step ? r.step_ratio() : r.narrowphase_ratio());
-        }
-      }
-      return std::string("NaN");
-    };
-    for (const bool step : {false, true}) {
-      write_file(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
-        o << "scene";
-        for (const std::string& b : backends) o << ' ' << b;
-        o << '\n';
-        for (const std::string& s : scene_names()) {
-          if (s == "paper") continue;
-          o << s;
-          for (const std::string& b : backends) o << ' ' << ratio(s, b, step);
-          o << '\n';
-        }
-      });
-    }
-    std::ostringstream bars;
-    bars << "set terminal svg size 1000,760 dynamic font 'sans,11' background '#ffffff'\n"
-         << "set output " << gp_quote(path("inworld.svg")) << "\n"
-         << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
-            "Box2D''s own contact (below 1: the plug-in is faster)'\n"
-         << "set style data histograms\nset style histogram clustered gap 1\n"
-         << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
-         << "set xtics nomirror font ',9'\nset key outside right top\n"
-         << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
-    for (const bool step : {false, true}) {
-      bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
-           << "'\nset ylabel '× " << box2d_own << "'\n"
-           << "plot for [i=2:" << backends.size() + 1 << "] "
-           << gp_quote(path(step ? "inworld_step.dat" : "inworld_collide.dat"))
-           << " using i:xtic(1) title columnheader(i)\n";
-    }
-    bars << "unset multiplot\n";
-    chart("inworld", bars.str());
-  }
+  explicit Markdown(const ReportFiles& files) : files_(files), run_(files.run) {}
 
   bool has_chart(const std::string& file) const {
-    return std::find(charts_.begin(), charts_.end(), file) != charts_.end();
+    return std::find(files_.charts.begin(), files_.charts.end(), file) != files_.charts.end();
   }
 
   void image(std::ostream& o, const std::string& file, const std::string& alt) const {
@@ -338,8 +72,8 @@ class Writer {
 
     o << "## Scenes\n\n| scene | what | steps | bodies | triangle fixtures | final state (dyop) |\n"
       << "|---|---|--:|--:|--:|---|\n";
-    for (const std::string& s : scene_names()) {
-      const SceneMetrics* m = row(s, "dyop");
+    for (const std::string& s : scene_names(run_)) {
+      const SceneMetrics* m = row(run_, s, "dyop");
       const SceneInfo* info = find_scene(s);
       o << "| " << s << " | " << (info ? info->description : "") << " | " << (m ? m->steps : 0)
         << " | " << (m ? m->bodies : 0) << " | " << (m ? m->triangles : 0) << " | [scene_" << s
@@ -503,7 +237,7 @@ class Writer {
         lines.push_back(who + std::to_string(*m.fallbacks) + " pairs answered by Box2D instead");
       }
       if (m.top_displacement && *m.top_displacement > standing_displacement) {
-        const SceneMetrics* ref = row(m.scene, "box2d");
+        const SceneMetrics* ref = row(run_, m.scene, "box2d");
         lines.push_back(who + "top moved " + fmt("%.3f", *m.top_displacement) + " m (box2d: " +
                         (ref && ref->top_displacement ? fmt("%.3f", *ref->top_displacement)
                                                       : std::string("n/a")) +
@@ -525,26 +259,20 @@ class Writer {
                         fmt("%.1f", skip_target_ratio));
       }
     }
-    for (const std::string& w : outcome_.warnings) lines.push_back(w);
+    for (const std::string& w : files_.outcome.warnings) lines.push_back(w);
     o << "## Problems\n\n";
     if (lines.empty()) o << "None: no NaN, no fallback, every pyramid and stack stands.\n";
     for (const std::string& l : lines) o << "- " << l << '\n';
     o << '\n';
   }
 
+ private:
+  const ReportFiles& files_;
   const CompareRun& run_;
-  std::string dir_;
-  ReportOutcome outcome_;
-  std::vector<std::string> charts_;
 };
 
 }  // namespace
 
-ReportOutcome write_report(const CompareRun& run) {
-  std::error_code ec;
-  std::filesystem::create_directories(run.options.out_dir, ec);
-  if (ec) return {{"cannot create " + run.options.out_dir + ": " + ec.message()}, {}};
-  return Writer(run).write();
-}
+void write_markdown(const ReportFiles& files, std::ostream& o) { Markdown(files).report(o); }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::scenes::detail

@@ -1,4 +1,4 @@
-#include "report/stress_runners.hpp"
+#include "measure/stress_runners.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "dyop/method.hpp"
 #include "workloads/finite_fields.hpp"
 #ifdef DYOP_WITH_BOX2D
-#include "dyop/box2d.hpp"
+#include "box2d_reference/collide_triangles.hpp"
 #endif
 
 namespace dyop::report {

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to the scenes library: number formatting for the tables and reports.
+// Number formatting for the tables and reports (and the scenes' progress lines): header only.
 
 #include <cmath>
 #include <cstdio>

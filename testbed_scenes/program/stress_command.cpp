@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
+#include "program/commands.hpp"
 #include "report/stress_report.hpp"
 
 namespace dyop::cli {
@@ -58,7 +58,7 @@ int run(const StressArgs& args) {
             << (broken.empty() ? "every promise held" : std::to_string(broken.size()) + " broken promises")
             << '\n';
   if (!written) return exit_io_error;
-  return args.check && !broken.empty() ? exit_check_failed : 0;
+  return args.check && !broken.empty() ? exit_check_failed : exit_success;
 }
 
 }  // namespace

@@ -1,13 +1,23 @@
-#include "scenes/scene_command.hpp"
+// `dyop scene`: the command (one scene under one backend, its summary, JSON and SVG) and its
+// registration.
+#include "program/scene_command.hpp"
 
 #include <fstream>
 #include <iomanip>
+#include <iostream>
+#include <memory>
 #include <ostream>
+#include <string>
+#include <vector>
 
+#include "program/commands.hpp"
 #include "scenes/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::cli {
+
+// The command is about scenes throughout; their names read better unqualified.
+using namespace dyop::scenes;
 
 void write_summary(const SceneMetrics& m, std::ostream& out) {
   const auto flags = out.flags();
@@ -46,24 +56,24 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   if (info == nullptr || !(backend || own)) {
     err << "dyop scene: unknown "
         << (info == nullptr ? "scene '" + c.scene + "'" : "backend '" + c.backend + "'") << '\n';
-    return 1;
+    return exit_usage_error;
   }
   if (own && std::string(info->name) == "paper") {
     err << "dyop scene: paper has no Box2D world: " << box2d_own << " runs only Box2D scenes\n";
-    return 1;
+    return exit_usage_error;
   }
   const ParsedSkips skips = parse_skips(c.skip);
   if (!skips.ok()) {
     err << "dyop scene: --skip: " << skips.error << '\n';
-    return 1;
+    return exit_usage_error;
   }
   if (c.json == "-" && c.svg == "-") {
     err << "dyop scene: --json and --svg cannot both go to standard output\n";
-    return 1;
+    return exit_usage_error;
   }
   if (c.steps && *c.steps < 1) {
     err << "dyop scene: --steps must be at least 1\n";
-    return 1;
+    return exit_usage_error;
   }
   std::ofstream json_file, svg_file;
   for (auto [path, file] : {std::pair{&c.json, &json_file}, std::pair{&c.svg, &svg_file}}) {
@@ -71,7 +81,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     file->open(*path);
     if (!*file) {
       err << "dyop scene: cannot write '" << *path << "'\n";
-      return 2;
+      return exit_io_error;
     }
   }
   std::ostream& summary = c.json == "-" || c.svg == "-" ? err : out;
@@ -85,7 +95,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   } catch (const std::exception& e) {
     err << "dyop scene: " << c.scene << " / " << c.backend << " could not run: " << e.what()
         << '\n';
-    return 2;
+    return exit_io_error;
   }
   write_summary(m, summary);
   if (!c.json.empty()) write_json(m, c.json == "-" ? out : json_file);
@@ -98,9 +108,44 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   }
   if (!written) {
     err << "dyop scene: output error\n";
-    return 2;
+    return exit_io_error;
   }
-  return 0;
+  return exit_success;
 }
 
-}  // namespace dyop::scenes
+void add_scene_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<SceneCommand>();
+  auto steps = std::make_shared<int>(0);
+  std::vector<std::string> names, backends;
+  std::string list;
+  for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
+    names.push_back(s.name);
+    list += std::string("\n  ") + s.name + ": " + s.description;
+  }
+  for (box2d::Backend b : box2d::all_backends) backends.push_back(box2d::name(b));
+  backends.push_back(scenes::box2d_own);
+  CLI::App* cmd = app.add_subcommand(
+      "scene", "Run one headless scene under one narrow phase and measure it. Scenes:" + list);
+  cmd->add_option("name", args->scene, "Scene")->required()->check(CLI::IsMember(names));
+  cmd->add_option("--backend,-b", args->backend,
+                  "Narrow phase for triangle pairs (box2d: Box2D's b2CollidePolygons through the "
+                  "plug-in; box2d-own: the plug-in not installed)")
+      ->required()
+      ->check(CLI::IsMember(backends));
+  CLI::Option* steps_option =
+      cmd->add_option("--steps", *steps, "Steps to run (default: the scene's own)")
+          ->check(CLI::Range(1, 10000000));
+  cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str();
+  cmd->add_option("--skip", args->skip, scenes::skip_help())
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
+                             "all|none|LIST"));
+  cmd->add_option("--json", args->json, "Write the figures as one JSON object to FILE, or '-'");
+  cmd->add_option("--svg", args->svg, "Draw the final state as SVG to FILE, or '-'");
+  cmd->callback([args, steps, steps_option, &exit_code] {
+    if (steps_option->count() > 0) args->steps = *steps;
+    exit_code = run_scene_command(*args, std::cout, std::cerr);
+  });
+}
+
+}  // namespace dyop::cli

@@ -6,11 +6,11 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
+#include "program/commands.hpp"
 #include "report/bench_report.hpp"
 #ifdef DYOP_WITH_BOX2D
+#include "report/rain_scaling_report.hpp"
 #include "report/stream_report.hpp"
-#include "scenes/rain_scaling.hpp"
 #endif
 
 namespace dyop::cli {
@@ -88,7 +88,7 @@ int run(const BenchArgs& args) {
       if (p.rfind("cannot", 0) == 0) return exit_io_error;
     }
   }
-  return 0;
+  return exit_success;
 }
 
 }  // namespace

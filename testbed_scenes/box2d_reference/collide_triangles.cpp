@@ -1,9 +1,11 @@
+#include "box2d_reference/collide_triangles.hpp"
+
+#include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
+#include <box2d/b2_polygon_shape.h>
 
 #include <algorithm>
 #include <cmath>
-
-#include "dyop/box2d.hpp"
 
 namespace dyop::box2d {
 namespace {

@@ -3,7 +3,7 @@
 /// `dyop scene NAME --backend B [--steps N] [--seed S] [--skip all|none|LIST] [--json FILE|-]
 /// [--svg FILE|-]`: runs one scene under one backend with the given narrow-phase skips, prints a
 /// short summary, and writes the figures as JSON and the final state as SVG. The command line
-/// (CLI11) validates names; this checks them again, checks files and runs.
+/// (CLI11, `add_scene_command`) validates names; this checks them again, checks files and runs.
 
 #include <cstdint>
 #include <iosfwd>
@@ -12,10 +12,10 @@
 
 #include "scenes/metrics.hpp"
 
-namespace dyop::scenes {
+namespace dyop::cli {
 
 struct SceneCommand {
-  std::string scene;         ///< a name of `scene_catalog()`
+  std::string scene;         ///< a name of `scenes::scene_catalog()`
   /// "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d", or "box2d-own" (Box2D scenes: the
   /// plug-in not installed)
   std::string backend;
@@ -28,11 +28,12 @@ struct SceneCommand {
 
 /// Runs the command. Output files are opened before the scene runs, so an unwritable path fails
 /// at once. The summary goes to `out`, or to `err` when the JSON or SVG goes to `out`. Returns
-/// 0, 1 (usage: unknown name or skip, both outputs on standard output) or 2 (a file cannot be
-/// written, or the scene could not run), with the reason on `err`.
+/// `exit_success`, `exit_usage_error` (unknown name or skip, both outputs on standard output) or
+/// `exit_io_error` (a file cannot be written, or the scene could not run), with the reason on
+/// `err`.
 int run_scene_command(const SceneCommand& command, std::ostream& out, std::ostream& err);
 
 /// A few readable lines about one run (what `dyop scene` prints).
-void write_summary(const SceneMetrics& m, std::ostream& out);
+void write_summary(const scenes::SceneMetrics& m, std::ostream& out);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::cli

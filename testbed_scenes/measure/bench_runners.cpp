@@ -1,4 +1,4 @@
-#include "report/bench_runners.hpp"
+#include "measure/bench_runners.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,8 @@
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #ifdef DYOP_WITH_BOX2D
-#include "dyop/box2d.hpp"
+#include "box2d_reference/box2d_pair_set.hpp"
+#include "box2d_reference/collide_triangles.hpp"
 #endif
 
 namespace dyop::report {

@@ -1,4 +1,4 @@
-#include "pair_csv.hpp"
+#include "program/pair_csv.hpp"
 
 #include <charconv>
 #include <cmath>

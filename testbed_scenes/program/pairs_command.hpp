@@ -1,11 +1,12 @@
 #pragma once
 /// \file
-/// `dyop pairs`: runs backends over the pair CSV (contract in `pair_csv.hpp`).
+/// `dyop pairs`: runs backends over the pair CSV (contract in `program/pair_csv.hpp`). The
+/// subcommand itself (arguments, files) is registered by `add_pairs_command` (`commands.hpp`).
 
 #include <iosfwd>
 #include <vector>
 
-#include "pair_backend.hpp"
+#include "program/pair_backend.hpp"
 
 namespace dyop::cli {
 

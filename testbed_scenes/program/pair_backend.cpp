@@ -1,8 +1,8 @@
-#include "pair_backend.hpp"
+#include "program/pair_backend.hpp"
 
 #include "dyop/method.hpp"
 #ifdef DYOP_WITH_BOX2D
-#include "dyop/box2d.hpp"
+#include "box2d_reference/collide_triangles.hpp"
 #endif
 
 namespace dyop::cli {

@@ -1,0 +1,95 @@
+// `dyop compare`: the command (the run is scenes/compare, the report report/compare_report) and
+// its registration.
+#include "program/compare_command.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "program/commands.hpp"
+#include "report/compare_report.hpp"
+#include "report/format.hpp"
+#include "scenes/scene.hpp"
+
+namespace dyop::cli {
+
+// The command is about scenes throughout; their names read better unqualified.
+using namespace dyop::scenes;
+using scenes::detail::fmt;
+
+int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err) {
+  // Fail before the long run if the report cannot be written.
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  const std::string probe = options.out_dir + "/report.md";
+  if (ec || !std::ofstream(probe, std::ios::app)) {
+    err << "dyop compare: cannot write to '" << options.out_dir << "'"
+        << (ec ? ": " + ec.message() : std::string()) << '\n';
+    return exit_io_error;
+  }
+  CompareRun run;
+  try {
+    run = run_compare(options, err);
+  } catch (const std::exception& e) {
+    err << "dyop compare: " << e.what() << '\n';
+    return exit_io_error;
+  }
+  write_compare_table(run, out);
+  if (!run.in_world.empty()) {
+    out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
+    write_in_world_table(run.in_world, out);
+  }
+  if (!run.skips.empty()) {
+    out << "\nSkipping what a scene doesn't need:\n\n";
+    write_skip_tables(run, out);
+  }
+  if (run.paper) {
+    out << "\nThe paper's experiment (scene `paper`):\n\n";
+    write_paper_tables(*run.paper, out);
+  }
+  const ReportOutcome report = write_report(run);
+  for (const std::string& w : report.warnings) err << "dyop compare: warning: " << w << '\n';
+  for (const std::string& e : report.errors) err << "dyop compare: " << e << '\n';
+  out << "\nreport: " << options.out_dir << "/report.md (run took " << fmt("%.1f", run.seconds)
+      << " s)\n";
+  return report.errors.empty() ? exit_success : exit_io_error;
+}
+
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<scenes::CompareOptions>();
+  auto steps = std::make_shared<int>(0);
+  std::vector<std::string> names;
+  for (const scenes::SceneInfo& s : scenes::scene_catalog()) names.push_back(s.name);
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Run every scene under every backend, and the skip section (pyramid, rain, tumbler, mixed "
+      "with every skip off and on); print the tables and write a report (Markdown, CSV, SVG "
+      "charts with gnuplot, scene snapshots)");
+  cmd->add_flag("--quick", options->quick, "Short runs (5 s of simulated time per Box2D scene)");
+  cmd->add_option("--out", options->out_dir, "Report directory")->capture_default_str();
+  CLI::Option* steps_option =
+      cmd->add_option("--steps", *steps, "Steps of every scene (default: the catalogue's)")
+          ->check(CLI::Range(1, 10000000));
+  cmd->add_option("--seed", options->seed, "Seed of every scene")->capture_default_str();
+  cmd->add_option("--scene", options->scenes, "Only these scenes (repeatable)")
+      ->check(CLI::IsMember(names));
+  auto skip = std::make_shared<std::string>("all");
+  const std::string skip_help =
+      scenes::skip_help() +
+      "\n(every run of the main table; the skip section sets it against none)";
+  cmd->add_option("--skip", *skip, skip_help)
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
+                             "all|none|LIST"));
+  cmd->callback([options, steps, steps_option, skip, &exit_code] {
+    if (steps_option->count() > 0) options->steps = *steps;
+    options->skips = scenes::parse_skips(*skip).config;
+    exit_code = run_compare_command(*options, std::cout, std::cerr);
+  });
+}
+
+}  // namespace dyop::cli
