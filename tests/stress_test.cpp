@@ -58,7 +58,7 @@ TEST_P(StressPromises, SatDyopAndBatchAreExactInEveryCategory) {
 TEST_P(StressPromises, NoMethodGivesNaNOrInfOnValidInput) {
   for (const StressRecord& r : records(GetParam())) {
     // Box2D's own code is measured, not promised: see the README's stress section.
-    if (r.runner == StressRunner::Box2D) continue;
+    if (r.runner == Method::Box2D) continue;
     EXPECT_EQ(r.nonfinite, 0) << r.method << " " << r.cls;
   }
 }
@@ -66,7 +66,7 @@ TEST_P(StressPromises, NoMethodGivesNaNOrInfOnValidInput) {
 TEST_P(StressPromises, OnlyDyopPaperAnswersInvalidAndOnlyByDesign) {
   for (const StressRecord& r : records(GetParam())) {
     EXPECT_EQ(r.invalid, 0) << r.method << " " << r.cls;
-    if (r.runner != StressRunner::DyopPaper) {
+    if (r.runner != Method::DyopPaper) {
       EXPECT_EQ(r.invalid_by_design, 0) << r.method;
     }
   }

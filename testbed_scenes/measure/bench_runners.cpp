@@ -7,12 +7,12 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
+#include "measure/pair_function.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "box2d_reference/box2d_pair_set.hpp"
-#include "box2d_reference/collide_triangles.hpp"
 #endif
 
-namespace dyop::report {
+namespace dyop::measure {
 namespace {
 
 // Keeps results alive without storing them: the compiler cannot drop a call whose result feeds
@@ -49,18 +49,6 @@ double median_ns(std::size_t pairs, int passes, Sweep&& sweep) {
   return ns[ns.size() / 2];
 }
 
-bool is_method(Runner r, Method& m) {
-  switch (r) {
-    case Runner::Dyop: m = Method::Dyop; return true;
-    case Runner::DyopFast: m = Method::DyopFast; return true;
-    case Runner::DyopPaper: m = Method::DyopPaper; return true;
-    case Runner::LinCannyCold: m = Method::LinCanny; return true;
-    case Runner::Sat: m = Method::Sat; return true;
-    case Runner::Epa: m = Method::Epa; return true;
-    default: return false;
-  }
-}
-
 // The set as the batch kernel takes it: one array per coordinate of the CCW vertices.
 template <class T>
 struct SoA {
@@ -93,127 +81,106 @@ struct BatchOut {
 
 }  // namespace
 
-const char* name(Runner r) {
-  switch (r) {
-    case Runner::Dyop: return "dyop";
-    case Runner::DyopFast: return "dyop-fast";
-    case Runner::DyopPaper: return "dyop-paper";
-    case Runner::LinCannyCold: return "lin-canny";
-    case Runner::LinCannyWarm: return "lin-canny-warm";
-    case Runner::Sat: return "sat";
-    case Runner::Epa: return "epa";
-    case Runner::Box2D: return "box2d";
-    case Runner::Batch: return "batch";
-  }
-  return "unknown";
+std::vector<Variant> bench_variants() {
+  return variants([](const MethodInfo& row) {
+    return !row.needs_box2d() || runs_pairs<float>(row.method);  // Box2D in builds with it
+  });
 }
 
-bool supports(Runner r, Level level, bool is_float) {
-  switch (r) {
-    case Runner::Box2D:
-#ifdef DYOP_WITH_BOX2D
-      return level == Level::Manifold && is_float;
-#else
-      (void)level;
-      (void)is_float;
-      return false;
-#endif
-    case Runner::Batch: return level == Level::Overlap || level == Level::Depth;
-    default: return true;
-  }
+bool supports(const Variant& v, Level level, bool is_float) {
+  const MethodInfo& row = info(v.method);
+  return row.has(level) && (is_float || row.runs_double) &&
+         (!row.needs_box2d() || runs_pairs<float>(v.method));
 }
 
 template <class T>
-std::vector<Answer<T>> answers(Runner r, const workloads::PairSet<T>& set) {
+std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& set) {
   std::vector<Answer<T>> out(set.size());
   auto keep = [&](std::size_t k, const auto& res) {
     out[k].status = res.status;
     out[k].separation = static_cast<T>(res.separation);
     out[k].normal = res.normal.template cast<T>();
   };
-  Method m;
-  if (is_method(r, m)) {
-    for (std::size_t k = 0; k < set.size(); ++k) keep(k, penetrate(m, set.a[k], set.b[k]));
-  } else if (r == Runner::LinCannyWarm) {
-    for (std::size_t k = 0; k < set.size(); ++k) {
-      LinCannyCache cache;
-      lin_canny(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
-      keep(k, lin_canny(set.a[k], set.b[k], Query<T>{}, &cache));
-    }
-  } else if (r == Runner::Box2D) {
-#ifdef DYOP_WITH_BOX2D
-    if constexpr (std::is_same_v<T, float>) {
-      for (std::size_t k = 0; k < set.size(); ++k) {
-        keep(k, box2d::collide_triangles(set.a[k], set.b[k]));
-      }
-    }
-#endif
-  } else if (r == Runner::Batch) {
+  if (info(v.method).entry == Entry::Batch) {
     const SoA<T> soa(set);
     BatchOut<T> o(set.size());
     penetrate_batch(soa.batch(), Level::Depth, o.view());
     for (std::size_t k = 0; k < set.size(); ++k) {
       out[k] = {o.status[k], o.separation[k], Vec2<T>(o.nx[k], o.ny[k])};
     }
+    return out;
+  }
+  const PairFunction<T> run = pair_function<T>(v.method);
+  if (run == nullptr) return out;
+  for (std::size_t k = 0; k < set.size(); ++k) {
+    LinCannyCache cache;
+    if (v.warm) run(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
+    keep(k, run(set.a[k], set.b[k], Query<T>{}, &cache));
   }
   return out;
 }
 
 template <class T>
-double time_per_pair(Runner r, const workloads::PairSet<T>& set, Level level, int passes) {
+double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level level,
+                     int passes) {
   const std::size_t n = set.size();
   const Query<T> q{level};
-  Method m;
-  if (is_method(r, m)) {
-    return median_ns(n, passes, [&](int) {
-      double sink = 0;
-      for (std::size_t k = 0; k < n; ++k) sink += penetrate(m, set.a[k], set.b[k], q).separation;
-      return sink;
-    });
-  }
-  if (r == Runner::LinCannyWarm) {
-    // Every pass is one frame of a small motion: the caches hold the previous frame's features.
-    std::vector<LinCannyCache> cache(n);
-    for (std::size_t k = 0; k < n; ++k) lin_canny(set.a[k], set.b_next[k], q, &cache[k]);
-    return median_ns(n, passes, [&](int pass) {
-      const std::vector<Triangle<T>>& b = pass % 2 == 0 ? set.b : set.b_next;
-      double sink = 0;
-      for (std::size_t k = 0; k < n; ++k) sink += lin_canny(set.a[k], b[k], q, &cache[k]).separation;
-      return sink;
-    });
-  }
-  if (r == Runner::Batch) {
-    const SoA<T> soa(set);
-    BatchOut<T> o(n);
-    const PairBatch<T> batch = soa.batch();
-    const BatchOutput<T> view = o.view();
-    return median_ns(n, passes, [&](int) {
-      penetrate_batch(batch, level, view);
-      return static_cast<double>(o.status[n / 2]);
-    });
-  }
-#ifdef DYOP_WITH_BOX2D
-  if constexpr (std::is_same_v<T, float>) {
-    if (r == Runner::Box2D) {
-      const workloads::Box2DPairSet s = workloads::make_box2d_pair_set(set);
-      return median_ns(n, passes, [&](int) {
+  switch (info(v.method).entry) {
+    case Entry::PerPair: {
+      if (!v.warm) {
+        return median_ns(n, passes, [&](int) {
+          double sink = 0;
+          for (std::size_t k = 0; k < n; ++k) {
+            sink += penetrate(v.method, set.a[k], set.b[k], q).separation;
+          }
+          return sink;
+        });
+      }
+      // Every pass is one frame of a small motion: the caches hold the previous frame's features.
+      std::vector<LinCannyCache> cache(n);
+      for (std::size_t k = 0; k < n; ++k) penetrate(v.method, set.a[k], set.b_next[k], q, &cache[k]);
+      return median_ns(n, passes, [&](int pass) {
+        const std::vector<Triangle<T>>& b = pass % 2 == 0 ? set.b : set.b_next;
         double sink = 0;
-        b2Manifold manifold;
         for (std::size_t k = 0; k < n; ++k) {
-          b2CollidePolygons(&manifold, &s.shape_a[k], s.xf_a[k], &s.shape_b[k], s.xf_b[k]);
-          sink += manifold.pointCount;
+          sink += penetrate(v.method, set.a[k], b[k], q, &cache[k]).separation;
         }
         return sink;
       });
     }
-  }
+    case Entry::Batch: {
+      const SoA<T> soa(set);
+      BatchOut<T> o(n);
+      const PairBatch<T> batch = soa.batch();
+      const BatchOutput<T> view = o.view();
+      return median_ns(n, passes, [&](int) {
+        penetrate_batch(batch, level, view);
+        return static_cast<double>(o.status[n / 2]);
+      });
+    }
+    case Entry::Box2D:
+#ifdef DYOP_WITH_BOX2D
+      if constexpr (std::is_same_v<T, float>) {
+        const workloads::Box2DPairSet s = workloads::make_box2d_pair_set(set);
+        return median_ns(n, passes, [&](int) {
+          double sink = 0;
+          b2Manifold manifold;
+          for (std::size_t k = 0; k < n; ++k) {
+            b2CollidePolygons(&manifold, &s.shape_a[k], s.xf_a[k], &s.shape_b[k], s.xf_b[k]);
+            sink += manifold.pointCount;
+          }
+          return sink;
+        });
+      }
 #endif
+      return 0;
+  }
   return 0;
 }
 
-template std::vector<Answer<float>> answers(Runner, const workloads::PairSet<float>&);
-template std::vector<Answer<double>> answers(Runner, const workloads::PairSet<double>&);
-template double time_per_pair(Runner, const workloads::PairSet<float>&, Level, int);
-template double time_per_pair(Runner, const workloads::PairSet<double>&, Level, int);
+template std::vector<Answer<float>> answers(const Variant&, const workloads::PairSet<float>&);
+template std::vector<Answer<double>> answers(const Variant&, const workloads::PairSet<double>&);
+template double time_per_pair(const Variant&, const workloads::PairSet<float>&, Level, int);
+template double time_per_pair(const Variant&, const workloads::PairSet<double>&, Level, int);
 
-}  // namespace dyop::report
+}  // namespace dyop::measure

@@ -1,31 +1,24 @@
 #pragma once
 /// \file
-/// What `dyop bench` times and checks: every method of the library, Lin–Canny cold and
-/// warm-started, Box2D's `b2CollidePolygons` and the batch kernel, run over a prepared pair set.
+/// What `dyop bench` times and checks: every variant of every row of the method registry
+/// (`dyop/method.hpp`; Lin–Canny cold and warm-started, the batch kernel, Box2D's
+/// `b2CollidePolygons` in builds with Box2D), run over a prepared pair set.
 
 #include <vector>
 
+#include "dyop/method.hpp"
 #include "dyop/result.hpp"
 #include "workloads/pair_sets.hpp"
 
-namespace dyop::report {
+namespace dyop::measure {
 
-enum class Runner {
-  Dyop, DyopFast, DyopPaper, LinCannyCold, LinCannyWarm, Sat, Epa, Box2D, Batch,
-};
+/// Every variant `dyop bench` runs, in registry order (cold before warm).
+std::vector<Variant> bench_variants();
 
-inline constexpr Runner all_runners[] = {
-    Runner::Dyop, Runner::DyopFast, Runner::DyopPaper, Runner::LinCannyCold, Runner::LinCannyWarm,
-    Runner::Sat,  Runner::Epa,      Runner::Box2D,     Runner::Batch};
-
-/// "dyop", "dyop-fast", "dyop-paper", "lin-canny", "lin-canny-warm", "sat", "epa", "box2d",
-/// "batch".
-const char* name(Runner r);
-
-/// Whether `r` runs at `level` in float (`is_float`) or double: Box2D always builds its full
-/// manifold, in float, and is timed at `Manifold` only; the batch kernel has `Overlap` and
-/// `Depth`; Box2D is absent from builds without Box2D.
-bool supports(Runner r, Level level, bool is_float);
+/// Whether `v` runs at `level` in float (`is_float`) or double in this build: the levels and
+/// precisions of its row (Box2D: its full manifold, in float, timed at `Manifold` only; the batch
+/// kernel: `Overlap` and `Depth`), and Box2D only in builds with Box2D.
+bool supports(const Variant& v, Level level, bool is_float);
 
 /// One pair's answer at `Level::Depth`, for the error figures.
 template <class T>
@@ -35,15 +28,15 @@ struct Answer {
   Vec2<T> normal = Vec2<T>::Zero();
 };
 
-/// Every pair's answer of `r` on `set` at `Level::Depth` (Box2D: its manifold's deepest point, as
-/// `dyop::box2d::collide_triangles`; warm Lin–Canny: after one warm-up frame).
+/// Every pair's answer of `v` on `set` at `Level::Depth` (Box2D: its manifold's deepest point, as
+/// `dyop::box2d::collide_triangles`; a warm variant: after one warm-up frame).
 template <class T>
-std::vector<Answer<T>> answers(Runner r, const workloads::PairSet<T>& set);
+std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& set);
 
 /// Median over `passes` timed passes of the time per pair (ns), at `level`; each pass sweeps the
 /// whole set as many times as it takes to last at least 20 ms.
 /// Everything a pass needs is prepared before the first one (shapes, caches, arrays).
 template <class T>
-double time_per_pair(Runner r, const workloads::PairSet<T>& set, Level level, int passes);
+double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level level, int passes);
 
-}  // namespace dyop::report
+}  // namespace dyop::measure

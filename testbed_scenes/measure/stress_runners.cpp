@@ -2,30 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-#include <type_traits>
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
+#include "measure/pair_function.hpp"
 #include "workloads/finite_fields.hpp"
-#ifdef DYOP_WITH_BOX2D
-#include "box2d_reference/collide_triangles.hpp"
-#endif
 
-namespace dyop::report {
+namespace dyop::measure {
 namespace {
-
-std::optional<Method> method_of(StressRunner r) {
-  switch (r) {
-    case StressRunner::Dyop: return Method::Dyop;
-    case StressRunner::DyopFast: return Method::DyopFast;
-    case StressRunner::DyopPaper: return Method::DyopPaper;
-    case StressRunner::LinCanny: return Method::LinCanny;
-    case StressRunner::Sat: return Method::Sat;
-    case StressRunner::Epa: return Method::Epa;
-    default: return std::nullopt;
-  }
-}
 
 using workloads::finite_at;
 
@@ -38,22 +22,26 @@ StressAnswer answer_of(const Result<T>& r, bool finite) {
   return a;
 }
 
+// A row that answers single pairs. Box2D's answer has `Level::Contact`'s fields whatever the
+// query asks, and no manifold of the library's kind to check.
 template <class T>
-std::vector<StressAnswer> method_answers(Method m, const std::vector<workloads::RawPair>& pairs,
-                                         bool with_manifold) {
+std::vector<StressAnswer> pair_answers(Method m, const std::vector<workloads::RawPair>& pairs,
+                                       bool with_manifold) {
+  const PairFunction<T> run = pair_function<T>(m);
+  const bool box2d = info(m).needs_box2d();
   std::vector<StressAnswer> out(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto t = workloads::build<T>(pairs[k]);
     if (!t.a.ok() || !t.b.ok()) continue;
     LinCannyCache cache;
-    const Result<T> r = penetrate(m, t.a.triangle, t.b.triangle, Query<T>{Level::Depth}, &cache);
-    bool finite = finite_at(r, Level::Depth);
-    if (with_manifold) {
+    const Result<T> r = run(t.a.triangle, t.b.triangle, Query<T>{Level::Depth}, &cache);
+    bool finite = finite_at(r, box2d ? Level::Contact : Level::Depth);
+    if (with_manifold && !box2d) {
       // A speculative margin of a hundredth of the larger triangle, as Box2D's skins are to a
       // metre-sized body: separated pairs within it get a manifold too.
       Query<T> q{Level::Manifold};
       q.margin = T(0.01) * std::max(t.a.triangle.size(), t.b.triangle.size());
-      finite = finite && finite_at(penetrate(m, t.a.triangle, t.b.triangle, q, &cache), q.level);
+      finite = finite && finite_at(run(t.a.triangle, t.b.triangle, q, &cache), q.level);
     }
     out[k] = answer_of(r, finite);
   }
@@ -99,50 +87,24 @@ std::vector<StressAnswer> batch_answers(const std::vector<workloads::RawPair>& p
   return out;
 }
 
-#ifdef DYOP_WITH_BOX2D
-std::vector<StressAnswer> box2d_answers(const std::vector<workloads::RawPair>& pairs) {
-  std::vector<StressAnswer> out(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto t = workloads::build<float>(pairs[k]);
-    if (!t.a.ok() || !t.b.ok()) continue;
-    const Result<float> r = box2d::collide_triangles(t.a.triangle, t.b.triangle);
-    out[k] = answer_of(r, finite_at(r, Level::Contact));
-  }
-  return out;
-}
-#endif
-
 }  // namespace
 
-const char* name(StressRunner r) {
-  if (const std::optional<Method> m = method_of(r)) return name(*m);
-  return r == StressRunner::Batch ? "batch" : "box2d";
-}
-
-bool runs(StressRunner r, bool is_float) {
-  if (r != StressRunner::Box2D) return true;
-#ifdef DYOP_WITH_BOX2D
-  return is_float;
-#else
-  (void)is_float;
-  return false;
-#endif
+bool stress_runs(Method m, bool is_float) {
+  return info(m).entry == Entry::Batch ||
+         (is_float ? runs_pairs<float>(m) : runs_pairs<double>(m));
 }
 
 template <class T>
-std::vector<StressAnswer> stress_answers(StressRunner r, const std::vector<workloads::RawPair>& pairs,
+std::vector<StressAnswer> stress_answers(Method m, const std::vector<workloads::RawPair>& pairs,
                                          bool with_manifold) {
-  if (const std::optional<Method> m = method_of(r)) return method_answers<T>(*m, pairs, with_manifold);
-  if (r == StressRunner::Batch) return batch_answers<T>(pairs);
-#ifdef DYOP_WITH_BOX2D
-  if constexpr (std::is_same_v<T, float>) return box2d_answers(pairs);
-#endif
-  return std::vector<StressAnswer>(pairs.size());
+  if (info(m).entry == Entry::Batch) return batch_answers<T>(pairs);
+  if (!runs_pairs<T>(m)) return std::vector<StressAnswer>(pairs.size());
+  return pair_answers<T>(m, pairs, with_manifold);
 }
 
-template std::vector<StressAnswer> stress_answers<float>(StressRunner,
+template std::vector<StressAnswer> stress_answers<float>(Method,
                                                          const std::vector<workloads::RawPair>&, bool);
-template std::vector<StressAnswer> stress_answers<double>(StressRunner,
+template std::vector<StressAnswer> stress_answers<double>(Method,
                                                           const std::vector<workloads::RawPair>&, bool);
 
-}  // namespace dyop::report
+}  // namespace dyop::measure

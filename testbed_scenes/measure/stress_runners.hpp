@@ -1,28 +1,21 @@
 #pragma once
 /// \file
-/// What `dyop stress` runs on a set of pairs: every method of the library, the batch kernel and
-/// (float, with Box2D) Box2D's `b2CollidePolygons` through `dyop::box2d::collide_triangles`.
+/// What `dyop stress` runs on a set of pairs: every row of the method registry
+/// (`dyop/method.hpp`): the library's per-pair methods, the batch kernel and (float, with Box2D)
+/// Box2D's `b2CollidePolygons` through `dyop::box2d::collide_triangles`.
 
 #include <cstdint>
 #include <vector>
 
+#include "dyop/method.hpp"
 #include "dyop/result.hpp"
 #include "workloads/pair_classes.hpp"
 
-namespace dyop::report {
+namespace dyop::measure {
 
-enum class StressRunner : std::uint8_t { Dyop, DyopFast, DyopPaper, LinCanny, Sat, Epa, Batch, Box2D };
-
-inline constexpr StressRunner all_stress_runners[] = {
-    StressRunner::Dyop, StressRunner::DyopFast, StressRunner::DyopPaper, StressRunner::LinCanny,
-    StressRunner::Sat,  StressRunner::Epa,      StressRunner::Batch,     StressRunner::Box2D};
-
-/// "dyop", "dyop-fast", "dyop-paper", "lin-canny", "sat", "epa", "batch", "box2d".
-const char* name(StressRunner r);
-
-/// Whether `r` runs in this precision in this build: Box2D in float only, and only when built
-/// with Box2D.
-bool runs(StressRunner r, bool is_float);
+/// Whether `m` runs in this precision in this build: Box2D in float only, and only when built
+/// with Box2D; every other row in both.
+bool stress_runs(Method m, bool is_float);
 
 /// One pair's answer at `Level::Depth`, with what the stress figures need of the rest.
 struct StressAnswer {
@@ -39,16 +32,16 @@ struct StressAnswer {
   bool verdict_mismatch = false;
 };
 
-/// The answers of `r` on `pairs` (world coordinates as given, exactly representable in T),
+/// The answers of `m` on `pairs` (world coordinates as given, exactly representable in T),
 /// one per pair in order. `with_manifold` adds the `Level::Manifold` query to the finiteness
 /// check (the per-pair methods; Lin–Canny then runs warm from its Depth query's cache).
 template <class T>
-std::vector<StressAnswer> stress_answers(StressRunner r, const std::vector<workloads::RawPair>& pairs,
+std::vector<StressAnswer> stress_answers(Method m, const std::vector<workloads::RawPair>& pairs,
                                          bool with_manifold);
 
 extern template std::vector<StressAnswer> stress_answers<float>(
-    StressRunner, const std::vector<workloads::RawPair>&, bool);
+    Method, const std::vector<workloads::RawPair>&, bool);
 extern template std::vector<StressAnswer> stress_answers<double>(
-    StressRunner, const std::vector<workloads::RawPair>&, bool);
+    Method, const std::vector<workloads::RawPair>&, bool);
 
-}  // namespace dyop::report
+}  // namespace dyop::measure

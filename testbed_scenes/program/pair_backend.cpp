@@ -1,34 +1,21 @@
 #include "program/pair_backend.hpp"
 
-#include "dyop/method.hpp"
-#ifdef DYOP_WITH_BOX2D
-#include "box2d_reference/collide_triangles.hpp"
-#endif
+#include "measure/pair_function.hpp"
 
 namespace dyop::cli {
 namespace {
-
-template <Method M, class T>
-Result<T> run_method(const Triangle<T>& a, const Triangle<T>& b) {
-  return penetrate(M, a, b, Query<T>{Level::Depth});
-}
-
-template <Method M>
-PairBackend method_backend() {
-  return {name(M), &run_method<M, double>, &run_method<M, float>};
-}
 
 Vec2<double> widen(const Vec2<float>& v) { return v.cast<double>(); }
 
 }  // namespace
 
 std::vector<PairBackend> pair_backends() {
-  std::vector<PairBackend> out = {method_backend<Method::Dyop>(),     method_backend<Method::DyopFast>(),
-                                  method_backend<Method::DyopPaper>(), method_backend<Method::LinCanny>(),
-                                  method_backend<Method::Sat>(),      method_backend<Method::Epa>()};
-#ifdef DYOP_WITH_BOX2D
-  out.push_back({"box2d", nullptr, &dyop::box2d::collide_triangles});
-#endif
+  std::vector<PairBackend> out;
+  for (const MethodInfo& row : method_table) {
+    if (!measure::runs_pairs<float>(row.method)) continue;
+    out.push_back({row.method, row.name, measure::pair_function<double>(row.method),
+                   measure::pair_function<float>(row.method)});
+  }
   return out;
 }
 

@@ -1,26 +1,26 @@
 #pragma once
 /// \file
-/// The narrow-phase backends the command line can run on a pair of triangles: every
-/// `dyop::Method`, and Box2D's own `b2CollidePolygons` when built with Box2D.
+/// The methods `dyop pairs` can run on a pair of triangles: every row of the registry
+/// (`dyop/method.hpp`) that answers single pairs in this build (`measure/pair_function.hpp`):
+/// the library's per-pair methods, and Box2D's own `b2CollidePolygons` when built with Box2D.
 
 #include <string>
 #include <vector>
 
-#include "dyop/result.hpp"
-#include "dyop/triangle.hpp"
+#include "dyop/method.hpp"
 
 namespace dyop::cli {
 
-/// One backend at `Level::Depth`.
+/// One method as `dyop pairs` runs it, at `Level::Depth`, cold.
 struct PairBackend {
-  std::string name;  ///< command-line spelling: "dyop", ..., "box2d"
-  /// Double-precision run; nullptr when the backend runs in float only (box2d).
-  Result<double> (*run_double)(const Triangle<double>&, const Triangle<double>&) = nullptr;
-  /// Float run.
-  Result<float> (*run_float)(const Triangle<float>&, const Triangle<float>&) = nullptr;
+  Method method = Method::Dyop;  ///< the registry's row
+  std::string name;              ///< its spelling: "dyop", ..., "box2d"
+  /// Double-precision run; nullptr when the method runs in float only (box2d).
+  PairFunction<double> run_double = nullptr;
+  PairFunction<float> run_float = nullptr;  ///< float run
 };
 
-/// Every backend of this build, methods first in `dyop::pair_methods` order.
+/// Every method of this build that answers single pairs, in registry order.
 std::vector<PairBackend> pair_backends();
 
 /// The result of a float run widened to double (for one output path).

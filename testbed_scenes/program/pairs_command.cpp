@@ -86,8 +86,10 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
         continue;
       }
       const Result<double> r =
-          use_float ? widen(b.run_float(in_float.a.triangle, in_float.b.triangle))
-                    : b.run_double(in_double.a.triangle, in_double.b.triangle);
+          use_float ? widen(b.run_float(in_float.a.triangle, in_float.b.triangle,
+                                        Query<float>{Level::Depth}, nullptr))
+                    : b.run_double(in_double.a.triangle, in_double.b.triangle,
+                                   Query<double>{Level::Depth}, nullptr);
       emit(b, format_result_line(row, r), r.status != Status::Invalid);
     }
   }

@@ -45,7 +45,7 @@ Reference reference_of(const workloads::PairSet<T>& set) {
 }
 
 template <class T>
-void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, BenchRecord& rec) {
+void measure_errors(const std::vector<measure::Answer<T>>& got, const Reference& ref, BenchRecord& rec) {
   std::vector<double> errors;
   double angle_sum = 0;
   int angles = 0;
@@ -96,21 +96,21 @@ void run_precision(const BenchOptions& options, workloads::BenchClass c,
   const int passes = options.quick ? 5 : 21;
   const workloads::PairSet<T> set = workloads::make_pair_set<T>(c, options.pairs, kSeed);
   const Reference ref = reference_of(set);
-  for (Runner r : all_runners) {
+  for (const Variant& v : measure::bench_variants()) {
     BenchRecord base;
-    base.method = name(r);
+    base.method = name(v);
     base.cls = workloads::name(c);
     base.precision = precision;
     base.pairs = static_cast<int>(set.size());
     bool any = false;
-    for (Level l : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
-      if (!supports(r, l, is_float)) continue;
-      if (!any) measure_errors(answers(r, set), ref, base);
+    for (Level l : all_levels) {
+      if (!measure::supports(v, l, is_float)) continue;
+      if (!any) measure_errors(measure::answers(v, set), ref, base);
       any = true;
       BenchRecord rec = base;
       rec.level = name(l);
-      rec.ns_per_pair = time_per_pair(r, set, l, passes);
-      if (r == Runner::Box2D) box2d_ns[rec.cls] = rec.ns_per_pair;
+      rec.ns_per_pair = measure::time_per_pair(v, set, l, passes);
+      if (v.method == Method::Box2D) box2d_ns[rec.cls] = rec.ns_per_pair;
       records.push_back(rec);
     }
     if (any) {

@@ -51,7 +51,7 @@ void write_skips_csv(const CompareRun& run, std::ostream& o) {
 void write_figure7_data(const CompareRun& run, std::ostream& o, char sep) {
   const paper::Experiment& e = *run.paper;
   o << "type" << sep << "size" << sep << "pairs";
-  for (const auto& m : e.methods) o << sep << paper::name(m.method);
+  for (const auto& m : e.methods) o << sep << name(m.method);
   o << '\n';
   for (int k = 0; k < paper::type_count; ++k) {
     const auto& t = paper::triangle_types()[k];
@@ -68,7 +68,7 @@ void write_paper_methods_csv(const CompareRun& run, std::ostream& o) {
   o << "method,us_overlapping_pairs,ns_per_pair,us_all_pairs,error_max,error_mean,"
        "misclassified,invalid,pairs_tested,pairs_penetrating,steps,repetitions\n";
   for (const auto& m : e.methods) {
-    o << paper::name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
+    o << name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
       << fmt("%.6g", m.ns_per_pair) << ',' << fmt("%.6g", m.us_all_pairs) << ','
       << fmt("%.6g", m.error_max) << ',' << fmt("%.6g", m.error_mean) << ',' << m.misclassified
       << ',' << m.invalid << ',' << e.pairs_tested << ',' << e.pairs_penetrating << ',' << e.steps

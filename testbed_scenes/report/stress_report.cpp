@@ -14,6 +14,7 @@
 namespace dyop::report {
 namespace {
 
+using measure::StressAnswer;
 using workloads::ExactAnswer;
 using workloads::Precision;
 using workloads::RawPair;
@@ -129,7 +130,7 @@ Category prepare(StressClass c, Precision precision, const StressOptions& o) {
 }
 
 template <class T>
-StressRecord measure(StressRunner r, StressClass c, const Category& cat) {
+StressRecord measure(Method r, StressClass c, const Category& cat) {
   const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
   StressRecord rec;
   rec.runner = r;
@@ -139,7 +140,9 @@ StressRecord measure(StressRunner r, StressClass c, const Category& cat) {
   const std::size_t n = cat.pairs[0].size();
   rec.pairs = static_cast<int>(n);
   std::vector<StressAnswer> answers[kVariants];
-  for (int v = 0; v < kVariants; ++v) answers[v] = stress_answers<T>(r, cat.pairs[v], v == 0);
+  for (int v = 0; v < kVariants; ++v) {
+    answers[v] = measure::stress_answers<T>(r, cat.pairs[v], v == 0);
+  }
   for (int v = 0; v < kVariants; ++v) {
     for (std::size_t k = 0; k < n; ++k) {
       rec.nonfinite += !answers[v][k].finite;
@@ -156,9 +159,9 @@ StressRecord measure(StressRunner r, StressClass c, const Category& cat) {
     }
     const StressAnswer& a = answers[0][k];
     if (a.status == Status::Invalid) {
-      if (r == StressRunner::DyopPaper) {
+      if (r == Method::DyopPaper) {
         ++rec.invalid_by_design;
-      } else if (r != StressRunner::Batch) {  // batch rows are judged by their verdict above
+      } else if (info(r).entry != Entry::Batch) {  // batch rows are judged by their verdict above
         ++rec.invalid;
       }
       continue;
@@ -202,8 +205,9 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
     const auto start = std::chrono::steady_clock::now();
     const Category cat = prepare<T>(c, precision, o);
     int rejected = 0;
-    for (StressRunner r : all_stress_runners) {
-      if (!runs(r, is_float)) continue;
+    for (const MethodInfo& row : method_table) {
+      const Method r = row.method;
+      if (!measure::stress_runs(r, is_float)) continue;
       records.push_back(measure<T>(r, c, cat));
       rejected = records.back().rejected;
     }
@@ -219,14 +223,9 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
 
 double exact_bound(Precision p) { return p == Precision::Float ? 1e-5 : 1e-12; }
 
-bool promises_exact(StressRunner r) {
-  return r == StressRunner::Sat || r == StressRunner::Dyop || r == StressRunner::Batch;
-}
+bool promises_exact(Method m) { return info(m).accuracy == Accuracy::Exact; }
 
-bool promises_invariance(StressRunner r) {
-  return r == StressRunner::Sat || r == StressRunner::Dyop || r == StressRunner::Epa ||
-         r == StressRunner::Batch;
-}
+bool promises_invariance(Method m) { return info(m).invariant(); }
 
 const char* name(Invariance i) {
   switch (i) {
@@ -249,7 +248,7 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
   std::vector<std::string> out;
   for (const StressRecord& r : records) {
     const std::string what = r.method + " " + r.precision + " " + r.cls + ": ";
-    const StressRunner runner = r.runner;
+    const Method runner = r.runner;
     const double bound =
         exact_bound(r.precision == "float" ? Precision::Float : Precision::Double);
     if (promises_exact(runner) && r.err_max > bound) {
@@ -267,7 +266,9 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
         }
       }
     }
-    if (r.nonfinite > 0 && runner != StressRunner::Box2D) out.push_back(what + std::to_string(r.nonfinite) + " NaN or inf answers");
+    if (r.nonfinite > 0 && !info(runner).needs_box2d()) {
+      out.push_back(what + std::to_string(r.nonfinite) + " NaN or inf answers");
+    }
     if (r.invalid > 0) {
       out.push_back(what + std::to_string(r.invalid) + " valid pairs answered Invalid or rows lost");
     }

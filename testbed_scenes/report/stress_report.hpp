@@ -37,15 +37,16 @@ struct StressOptions {
 /// far below the error of a wrong axis or feature. Also the tolerance of an invariance check.
 double exact_bound(workloads::Precision p);
 
-/// `r` promises the exact answer (error within `exact_bound`, no misclassification): sat, dyop
-/// and the batch kernel (sat's arithmetic).
-bool promises_exact(StressRunner r);
+/// `m` promises the exact answer (error within `exact_bound`, no misclassification): the
+/// registry's `Accuracy::Exact` rows (sat, dyop and the batch kernel, sat's arithmetic).
+bool promises_exact(Method m);
 
-/// `r` promises invariance under motion, reordering and swapping: sat, dyop, epa, batch.
+/// `m` promises invariance under motion, reordering and swapping: the registry's invariant rows
+/// (`MethodInfo::invariant`: sat, dyop, epa, batch).
 /// dyop-fast's pivot comes from axis-aligned boxes, dyop-paper's eq. 8 divides by a distance
 /// from the origin, and Lin–Canny ends in a local minimum that depends on where its walk starts:
 /// their violations are figures, not failures.
-bool promises_invariance(StressRunner r);
+bool promises_invariance(Method m);
 
 /// The invariance checks, in the order of `StressRecord::invariance`.
 enum class Invariance : std::uint8_t { Translation, Rotation, Reorder, Swap };
@@ -55,8 +56,8 @@ const char* name(Invariance i);
 
 /// One runner on one category in one precision.
 struct StressRecord {
-  StressRunner runner = StressRunner::Dyop;  ///< what ran
-  std::string method;     ///< `name(runner)`
+  Method runner = Method::Dyop;  ///< what ran
+  std::string method;            ///< `name(runner)`
   std::string cls;        ///< category (`workloads::name(StressClass)`)
   std::string precision;  ///< "double" or "float"
   int pairs = 0;          ///< pairs generated

@@ -277,19 +277,19 @@ void write_paper_tables(const paper::Experiment& e, std::ostream& out) {
          "triangle type is in, over all "
       << e.steps << " steps (µs, median of " << e.repetitions << " repetitions):\n\n"
       << "| type | size | pairs |";
-  for (const auto& m : e.methods) out << ' ' << paper::name(m.method) << " |";
+  for (const auto& m : e.methods) out << ' ' << name(m.method) << " |";
   out << " lin-canny-warm / dyop | lin-canny-cold / dyop |\n|--:|--:|--:|";
   for (std::size_t i = 0; i < e.methods.size() + 2; ++i) out << "--:|";
   out << '\n';
-  auto figures = [&](paper::Method which) -> const paper::MethodFigures& {
+  auto figures = [&](const Variant& which) -> const paper::MethodFigures& {
     for (const auto& m : e.methods) {
       if (m.method == which) return m;
     }
     return e.methods.front();
   };
-  const auto& dyop = figures(paper::Method::Dyop);
-  const auto& warm = figures(paper::Method::LinCannyWarm);
-  const auto& cold = figures(paper::Method::LinCannyCold);
+  const auto& dyop = figures({Method::Dyop, false});
+  const auto& warm = figures({Method::LinCanny, true});
+  const auto& cold = figures({Method::LinCanny, false});
   for (int k = 0; k < paper::type_count; ++k) {
     const auto& t = types[k];
     const double size =
@@ -307,7 +307,7 @@ void write_paper_tables(const paper::Experiment& e, std::ostream& out) {
          "| depth error max | depth error mean | misclassified | invalid |\n"
       << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const auto& m : e.methods) {
-    out << "| " << paper::name(m.method) << " | " << fmt("%.1f", m.us_total) << " | "
+    out << "| " << name(m.method) << " | " << fmt("%.1f", m.us_total) << " | "
         << fmt("%.1f", m.ns_per_pair) << " | " << fmt("%.2f", m.us_total / dyop.us_total) << " | "
         << fmt("%.1f", m.us_all_pairs) << " | " << fmt("%.2f", m.us_all_pairs / dyop.us_all_pairs)
         << " | " << metres(m.error_max) << " | " << metres(m.error_mean) << " | " << m.misclassified
@@ -319,7 +319,7 @@ void write_paper_tables(const paper::Experiment& e, std::ostream& out) {
       << fmt("%.2f", warm.us_total / dyop.us_total)
       << ", cold / dyop = " << fmt("%.2f", cold.us_total / dyop.us_total)
       << "; the paper's literal method (dyop-paper) against warm Lin–Canny: "
-      << fmt("%.2f", warm.us_total / figures(paper::Method::DyopPaper).us_total) << ".\n";
+      << fmt("%.2f", warm.us_total / figures({Method::DyopPaper, false}).us_total) << ".\n";
 }
 
 }  // namespace dyop::scenes

@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "dyop/sat.hpp"
-#include "scenes/backend_depth.hpp"
+#include "measure/pair_function.hpp"
 #include "scenes/world.hpp"
 
 namespace dyop::scenes {
@@ -92,7 +92,10 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
       errors.add(Status::Invalid, 0, 0, 0);  // the plug-in falls back to Box2D on this pair
       continue;
     }
-    const Result<float> r = backend_depth(backend_, ta.triangle, tb.triangle, &cache.cache);
+    // The backend's depth, in float as the plug-in computes it (Lin–Canny warm-started from the
+    // pair's cache; Box2D: the deepest point of its manifold).
+    const Result<float> r = measure::pair_function<float>(backend_)(
+        ta.triangle, tb.triangle, Query<float>{Level::Depth}, &cache.cache);
     auto widen = [](const Triangle<float>& t) {
       return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),
                                     t.vertex(2).cast<double>());

@@ -74,33 +74,20 @@ struct Frame {
 };
 Frame frame_at(double t);
 
-/// The methods of the experiment: every method of the library, Lin–Canny both cold and
+/// The methods of the experiment, in registry order (`dyop/method.hpp`): every row that answers
+/// single pairs in float in this build (`measure::pair_function`), Lin–Canny both cold and
 /// warm-started (a cache per pair kept from step to step, as the Box2D plug-in keeps one per
-/// contact), and Box2D's `b2CollidePolygons` (`collide_triangles`).
-enum class Method : std::uint8_t {
-  Dyop,
-  DyopFast,
-  DyopPaper,
-  LinCannyWarm,
-  LinCannyCold,
-  Sat,
-  Epa,
-  Box2D,
-};
-inline constexpr Method all_methods[] = {
-    Method::Dyop,         Method::DyopFast, Method::DyopPaper, Method::LinCannyWarm,
-    Method::LinCannyCold, Method::Sat,      Method::Epa,       Method::Box2D};
+/// contact); Box2D's `b2CollidePolygons` through `box2d::collide_triangles`.
+std::vector<Variant> experiment_methods();
 
-/// "dyop", "dyop-fast", "dyop-paper", "lin-canny-warm", "lin-canny-cold", "sat", "epa", "box2d".
-const char* name(Method m);
-
-/// The experiment's method behind a Box2D backend (Lin–Canny: warm, as in the plug-in).
-Method method_of(box2d::Backend backend);
+/// The experiment's method behind a Box2D backend: warm where the method keeps state, as in the
+/// plug-in.
+Variant variant_of(box2d::Backend backend);
 
 /// One method's figures. Times are medians over the repetitions, in microseconds for the whole
 /// run (all steps), as the paper gives milliseconds "for all 90 simulation steps".
 struct MethodFigures {
-  Method method = Method::Dyop;
+  Variant method;  ///< the method, cold or warm
   /// Per type: the time of every bounding-box-overlapping pair the type is in, over all steps
   /// (each pair counts for both its types, as each triangle is tested against the others).
   std::array<double, type_count> us_per_type{};
@@ -121,7 +108,7 @@ struct Experiment {
   std::uint64_t pairs_tested = 0;       ///< (pair, step) samples whose bounding boxes overlap
   std::uint64_t pairs_penetrating = 0;  ///< of those, exactly penetrating
   std::array<std::uint64_t, type_count> pairs_per_type{};  ///< samples each type is in
-  std::vector<MethodFigures> methods;                      ///< in `all_methods` order
+  std::vector<MethodFigures> methods;  ///< in `experiment_methods()` order
 };
 
 /// Runs the experiment: `repetitions` timed passes of every method (interleaved, so that the

@@ -34,20 +34,21 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   e.pairs_tested = overlapping.size();
   for (int k = 0; k < type_count; ++k) e.pairs_per_type[k] = per_type[k].size();
 
-  constexpr int kMethods = static_cast<int>(std::size(all_methods));
-  std::array<std::array<std::vector<double>, type_count>, kMethods> type_us;
-  std::array<std::vector<double>, kMethods> total_us, all_us;
+  const std::vector<Variant> methods = experiment_methods();
+  const int n_methods = static_cast<int>(methods.size());
+  std::vector<std::array<std::vector<double>, type_count>> type_us(methods.size());
+  std::vector<std::vector<double>> total_us(methods.size()), all_us(methods.size());
   std::vector<LinCannyCache> caches(pair_count);
   const std::vector<LinCannyCache> cold(pair_count);
   for (int rep = 0; rep < repetitions; ++rep) {
-    for (int n = 0; n < kMethods; ++n) {
-      const int m = (n + rep) % kMethods;  // a different method first each repetition
-      const Fn fn = fn_of(all_methods[m]);
+    for (int n = 0; n < n_methods; ++n) {
+      const int m = (n + rep) % n_methods;  // a different method first each repetition
+      const PairCall call = call_of(methods[m]);
       for (int k = 0; k < type_count; ++k) {
-        type_us[m][k].push_back(time_jobs(per_type[k], fn, caches, cold));
+        type_us[m][k].push_back(time_jobs(per_type[k], call, caches, cold));
       }
-      total_us[m].push_back(time_jobs(overlapping, fn, caches, cold));
-      all_us[m].push_back(time_jobs(everything, fn, caches, cold));
+      total_us[m].push_back(time_jobs(overlapping, call, caches, cold));
+      all_us[m].push_back(time_jobs(everything, call, caches, cold));
     }
   }
 
@@ -57,19 +58,19 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
     exact.push_back(exact_of(*j.a, *j.b));
     e.pairs_penetrating += exact.back().sign < 0;
   }
-  for (int m = 0; m < kMethods; ++m) {
+  for (int m = 0; m < n_methods; ++m) {
     MethodFigures f;
-    f.method = all_methods[m];
+    f.method = methods[m];
     for (int k = 0; k < type_count; ++k) f.us_per_type[k] = median(type_us[m][k]);
     f.us_total = median(total_us[m]);
     f.us_all_pairs = median(all_us[m]);
     f.ns_per_pair = e.pairs_tested > 0 ? f.us_total * 1e3 / static_cast<double>(e.pairs_tested) : 0;
-    const Fn fn = fn_of(f.method);
+    const PairCall call = call_of(f.method);
     caches = cold;
     ErrorTally tally;
     for (std::size_t n = 0; n < overlapping.size(); ++n) {
       const Job& j = overlapping[n];
-      const Result<float> r = fn(*j.a, *j.b, &caches[j.pair]);
+      const Result<float> r = call(*j.a, *j.b, &caches[j.pair]);
       tally.add(r.status, r.depth, exact[n].separation, band_of(*j.a, *j.b));
     }
     f.error_max = tally.max();

@@ -16,12 +16,12 @@ int pair_index(int i, int j) {
   return i * (2 * type_count - i - 1) / 2 + (j - i - 1);
 }
 
-double time_jobs(const std::vector<Job>& jobs, Fn fn, std::vector<LinCannyCache>& caches,
+double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<LinCannyCache>& caches,
                  const std::vector<LinCannyCache>& start) {
   caches = start;
   double sink = 0;
   const auto t0 = std::chrono::steady_clock::now();
-  for (const Job& j : jobs) sink += fn(*j.a, *j.b, &caches[j.pair]).depth;
+  for (const Job& j : jobs) sink += call(*j.a, *j.b, &caches[j.pair]).depth;
   const auto t1 = std::chrono::steady_clock::now();
   g_sink = sink;
   return std::chrono::duration<double, std::micro>(t1 - t0).count();

@@ -5,16 +5,28 @@
 #include <vector>
 
 #include "dyop/lin_canny.hpp"
+#include "dyop/method.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "scenes/paper.hpp"
 
 namespace dyop::scenes::paper {
 
-// Every method behind one signature, so that all are called alike (one indirect call each).
-using Fn = Result<float> (*)(const Triangle<float>&, const Triangle<float>&, LinCannyCache*);
+// The paper asks for penetration depths: pairs apart need only the proof (`Apart::Gap`).
+inline constexpr Query<float> depth_query{Level::Depth, 0, 0, Apart::Gap};
 
-/// `m`'s entry point (paper_methods.cpp).
-Fn fn_of(Method m);
+// One method of the experiment behind one call, so that all are called alike (one indirect call
+// each): its single-pair entry point, started from the pair's cache when warm.
+struct PairCall {
+  PairFunction<float> run = nullptr;
+  bool warm = false;
+  Result<float> operator()(const Triangle<float>& a, const Triangle<float>& b,
+                           LinCannyCache* cache) const {
+    return run(a, b, depth_query, warm ? cache : nullptr);
+  }
+};
+
+/// `v`'s call (paper_methods.cpp).
+PairCall call_of(const Variant& v);
 
 /// The index of the pair of types `i` < `j`, in 0 … `pair_count` - 1.
 int pair_index(int i, int j);
@@ -26,8 +38,8 @@ struct Job {
   int pair;                  ///< `pair_index` of the two types (its warm-start cache)
 };
 
-/// Wall time of `jobs` through `fn` in microseconds; `caches` (one per pair) start from `start`.
-double time_jobs(const std::vector<Job>& jobs, Fn fn, std::vector<LinCannyCache>& caches,
+/// Wall time of `jobs` through `call` in microseconds; `caches` (one per pair) start from `start`.
+double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<LinCannyCache>& caches,
                  const std::vector<LinCannyCache>& start);
 
 /// The exact signed separation of a pair, on the float vertices the methods were given.

@@ -15,7 +15,7 @@ double area_of(const TriangleType& t) {
 class PaperScene : public Scene {
  public:
   PaperScene(box2d::Backend backend, std::uint64_t seed)
-      : backend_(backend), seed_(seed), fn_(fn_of(method_of(backend))), caches_(pair_count) {}
+      : backend_(backend), seed_(seed), call_(call_of(variant_of(backend))), caches_(pair_count) {}
 
   void step() override {
     const Frame f = frame_at(time_of(steps_));
@@ -25,10 +25,10 @@ class PaperScene : public Scene {
     }
     // Timed once, first: repeating a step's few pairs would let the branch predictor learn them.
     const std::vector<LinCannyCache> start = caches_;
-    step_us_.push_back(time_jobs(jobs, fn_, caches_, start));
+    step_us_.push_back(time_jobs(jobs, call_, caches_, start));
     std::vector<LinCannyCache> replay = start;
     for (const Job& j : jobs) {  // untimed, from the same caches: the answers the timing got
-      const Result<float> r = fn_(*j.a, *j.b, &replay[j.pair]);
+      const Result<float> r = call_(*j.a, *j.b, &replay[j.pair]);
       const workloads::ExactAnswer x = exact_of(*j.a, *j.b);
       errors_.add(r.status, r.depth, x.separation, band_of(*j.a, *j.b));
       if (r.status != Status::Invalid && !std::isfinite(r.depth)) nan_ = true;
@@ -97,7 +97,7 @@ class PaperScene : public Scene {
 
   box2d::Backend backend_;
   std::uint64_t seed_;
-  Fn fn_;
+  PairCall call_;
   std::vector<LinCannyCache> caches_;
   int steps_ = 0;
   std::uint64_t pairs_ = 0;

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string_view>
 #include <type_traits>
+#include <vector>
 
 #include "dyop/dyop.hpp"
 #include "dyop/dyop_paper.hpp"
@@ -192,6 +193,35 @@ constexpr const char* variant_name(Method m, bool warm) {
   const MethodInfo& row = info(m);
   if (!row.warm_start) return row.name;
   return warm ? row.warm_name : row.cold_name;
+}
+
+/// A method as a comparison runs it: a warm-startable method (`info(method).warm_start`) either
+/// cold, every query from no state, or warm, each query from the state the pair's previous query
+/// left; the others have one way only (`warm` false).
+struct Variant {
+  Method method = Method::Dyop;  ///< the registry's row
+  bool warm = false;             ///< warm-startable methods only: from the previous query's state
+};
+
+/// `variant_name(v.method, v.warm)`: "lin-canny-cold", "lin-canny-warm", "dyop", ...
+constexpr const char* name(const Variant& v) { return variant_name(v.method, v.warm); }
+
+/// True when `x` and `y` are the same way of running the same method.
+constexpr bool operator==(const Variant& x, const Variant& y) {
+  return x.method == y.method && x.warm == y.warm;
+}
+constexpr bool operator!=(const Variant& x, const Variant& y) { return !(x == y); }
+
+/// Every variant of the rows `keep(row)` accepts, in registry order, cold before warm.
+template <class Keep>
+std::vector<Variant> variants(Keep keep) {
+  std::vector<Variant> out;
+  for (const MethodInfo& row : method_table) {
+    if (!keep(row)) continue;
+    out.push_back({row.method, false});
+    if (row.warm_start) out.push_back({row.method, true});
+  }
+  return out;
 }
 
 /// The method spelt `s` (its `name`), or nothing.

@@ -1,0 +1,39 @@
+#include "measure/pair_function.hpp"
+
+#include <type_traits>
+
+#ifdef DYOP_WITH_BOX2D
+#include "box2d_reference/collide_triangles.hpp"
+#endif
+
+namespace dyop::measure {
+namespace {
+
+#ifdef DYOP_WITH_BOX2D
+Result<float> box2d_pair(const Triangle<float>& a, const Triangle<float>& b, const Query<float>&,
+                         LinCannyCache*) {
+  return box2d::collide_triangles(a, b);
+}
+#endif
+
+}  // namespace
+
+template <class T>
+PairFunction<T> pair_function(Method m) {
+  const MethodInfo& row = info(m);
+  switch (row.entry) {
+    case Entry::PerPair: return row.run<T>();
+    case Entry::Batch: return nullptr;
+    case Entry::Box2D:
+#ifdef DYOP_WITH_BOX2D
+      if constexpr (std::is_same_v<T, float>) return &box2d_pair;
+#endif
+      return nullptr;
+  }
+  return nullptr;
+}
+
+template PairFunction<float> pair_function<float>(Method);
+template PairFunction<double> pair_function<double>(Method);
+
+}  // namespace dyop::measure
