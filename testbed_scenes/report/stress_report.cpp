@@ -134,7 +134,7 @@ StressRecord measure(Method r, StressClass c, const Category& cat) {
   const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
   StressRecord rec;
   rec.runner = r;
-  rec.method = name(r);
+  rec.method = variant_name(r, false);  // every pair is answered from no state
   rec.cls = workloads::name(c);
   rec.precision = workloads::name(precision);
   const std::size_t n = cat.pairs[0].size();

@@ -57,7 +57,7 @@ const char* name(Invariance i);
 /// One runner on one category in one precision.
 struct StressRecord {
   Method runner = Method::Dyop;  ///< what ran
-  std::string method;            ///< `name(runner)`
+  std::string method;            ///< `variant_name(runner, false)`: every run is cold
   std::string cls;        ///< category (`workloads::name(StressClass)`)
   std::string precision;  ///< "double" or "float"
   int pairs = 0;          ///< pairs generated
