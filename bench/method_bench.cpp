@@ -14,6 +14,7 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
+#include "workloads/batch_arrays.hpp"
 #include "workloads/pair_sets.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "box2d_reference/box2d_pair_set.hpp"
@@ -76,38 +77,16 @@ void bm_warm(benchmark::State& state, Method m, BenchClass c, Level l) {
   state.SetItemsProcessed(state.iterations());
 }
 
-// The batch kernel over structure-of-arrays copies of a set; `state.iterations()` counts pairs.
-template <class T>
-struct BatchArrays {
-  std::vector<T> c[12];
-  std::vector<Status> status;
-  std::vector<T> separation, nx, ny;
-  BatchArrays(const std::vector<Triangle<T>>& a, const std::vector<Triangle<T>>& b, std::size_t n)
-      : status(n), separation(n), nx(n), ny(n) {
-    for (auto& v : c) v.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t s = k % a.size();  // a streaming set repeats the distinct pairs
-      for (int i = 0; i < 3; ++i) {
-        c[2 * i][k] = a[s].vertex(i).x();
-        c[2 * i + 1][k] = a[s].vertex(i).y();
-        c[6 + 2 * i][k] = b[s].vertex(i).x();
-        c[7 + 2 * i][k] = b[s].vertex(i).y();
-      }
-    }
-  }
-  PairBatch<T> pairs() const {
-    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(),  c[5].data(),
-            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
-            status.size()};
-  }
-  BatchOutput<T> out() { return {status.data(), separation.data(), nx.data(), ny.data()}; }
-};
-
 // `pairs` 0: the class's distinct pairs (in cache); otherwise a streaming set of that many.
 template <class T>
 void bm_batch(benchmark::State& state, BenchClass c, Level l, std::size_t pairs) {
   const PairSet<T>& s = pairs_of<T>(c);
-  BatchArrays<T> arrays(s.a, s.b, pairs == 0 ? s.size() : pairs);
+  // A streaming set repeats the distinct pairs; `state.iterations()` counts batches.
+  workloads::BatchArrays<T> arrays(pairs == 0 ? s.size() : pairs,
+                                   [&](std::size_t k, int side, int i) {
+                                     const std::size_t d = k % s.size();
+                                     return (side == 0 ? s.a[d] : s.b[d]).vertex(i);
+                                   });
   const PairBatch<T> in = arrays.pairs();
   const BatchOutput<T> out = arrays.out();
   for (auto _ : state) {

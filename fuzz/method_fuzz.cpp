@@ -24,6 +24,7 @@
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "fuzz_input.hpp"
+#include "workloads/batch_arrays.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/finite_fields.hpp"
 
@@ -78,17 +79,16 @@ void check_exact(const Result<T>& r, const FuzzInput& in, T band) {
 template <class T>
 void check_batch(const FuzzInput& in, const TriangleOrError<T>& a, const TriangleOrError<T>& b) {
   constexpr std::size_t rows = 9;
-  std::vector<T> c[12];
-  for (int k = 0; k < 12; ++k) c[k].assign(rows, T(in.coords[k]));
-  const PairBatch<T> batch{c[0].data(), c[1].data(), c[2].data(),  c[3].data(),
-                           c[4].data(), c[5].data(), c[6].data(),  c[7].data(),
-                           c[8].data(), c[9].data(), c[10].data(), c[11].data(), rows};
-  std::vector<Status> status(rows);
-  std::vector<T> sep(rows), nx(rows), ny(rows);
-  require(penetrate_batch(batch, Level::Depth,
-                          BatchOutput<T>{status.data(), sep.data(), nx.data(), ny.data()}) ==
-              BatchError::None,
+  workloads::BatchArrays<T> arrays(rows, [&](std::size_t, int side, int i) {
+    return Vec2<T>(T(in.coords[6 * side + 2 * i]), T(in.coords[6 * side + 2 * i + 1]));
+  });
+  const PairBatch<T> batch = arrays.pairs();
+  require(penetrate_batch(batch, Level::Depth, arrays.out()) == BatchError::None,
           "batch refused a plain call", in);
+  const std::vector<Status>& status = arrays.status;
+  const std::vector<T>& sep = arrays.separation;
+  const std::vector<T>& nx = arrays.normal_x;
+  const std::vector<T>& ny = arrays.normal_y;
   const BatchRowError e = batch_row_error(batch, 0);
   require(e.a == a.error && e.b == b.error, "batch's verdict differs from Triangle::make's", in);
   const bool valid = a.ok() && b.ok();

@@ -8,6 +8,7 @@
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "measure/pair_function.hpp"
+#include "workloads/batch_arrays.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "box2d_reference/box2d_pair_set.hpp"
 #endif
@@ -49,35 +50,13 @@ double median_ns(std::size_t pairs, int passes, Sweep&& sweep) {
   return ns[ns.size() / 2];
 }
 
-// The set as the batch kernel takes it: one array per coordinate of the CCW vertices.
+// The set as the batch kernel takes it (its CCW vertices).
 template <class T>
-struct SoA {
-  std::vector<T> c[12];
-  explicit SoA(const workloads::PairSet<T>& s) {
-    for (auto& v : c) v.resize(s.size());
-    for (std::size_t k = 0; k < s.size(); ++k) {
-      for (int i = 0; i < 3; ++i) {
-        c[2 * i][k] = s.a[k].vertex(i).x();
-        c[2 * i + 1][k] = s.a[k].vertex(i).y();
-        c[6 + 2 * i][k] = s.b[k].vertex(i).x();
-        c[7 + 2 * i][k] = s.b[k].vertex(i).y();
-      }
-    }
-  }
-  PairBatch<T> batch() const {
-    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(),  c[5].data(),
-            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
-            c[0].size()};
-  }
-};
-
-template <class T>
-struct BatchOut {
-  std::vector<Status> status;
-  std::vector<T> separation, nx, ny;
-  explicit BatchOut(std::size_t n) : status(n), separation(n), nx(n), ny(n) {}
-  BatchOutput<T> view() { return {status.data(), separation.data(), nx.data(), ny.data()}; }
-};
+workloads::BatchArrays<T> batch_arrays(const workloads::PairSet<T>& s) {
+  return workloads::BatchArrays<T>(s.size(), [&](std::size_t k, int side, int i) {
+    return (side == 0 ? s.a[k] : s.b[k]).vertex(i);
+  });
+}
 
 }  // namespace
 
@@ -102,11 +81,10 @@ std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& se
     out[k].normal = res.normal.template cast<T>();
   };
   if (info(v.method).entry == Entry::Batch) {
-    const SoA<T> soa(set);
-    BatchOut<T> o(set.size());
-    penetrate_batch(soa.batch(), Level::Depth, o.view());
+    workloads::BatchArrays<T> o = batch_arrays(set);
+    penetrate_batch(o.pairs(), Level::Depth, o.out());
     for (std::size_t k = 0; k < set.size(); ++k) {
-      out[k] = {o.status[k], o.separation[k], Vec2<T>(o.nx[k], o.ny[k])};
+      out[k] = {o.status[k], o.separation[k], Vec2<T>(o.normal_x[k], o.normal_y[k])};
     }
     return out;
   }
@@ -149,10 +127,9 @@ double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level l
       });
     }
     case Entry::Batch: {
-      const SoA<T> soa(set);
-      BatchOut<T> o(n);
-      const PairBatch<T> batch = soa.batch();
-      const BatchOutput<T> view = o.view();
+      workloads::BatchArrays<T> o = batch_arrays(set);
+      const PairBatch<T> batch = o.pairs();
+      const BatchOutput<T> view = o.out();
       return median_ns(n, passes, [&](int) {
         penetrate_batch(batch, level, view);
         return static_cast<double>(o.status[n / 2]);

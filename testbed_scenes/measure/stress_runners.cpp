@@ -6,6 +6,7 @@
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
 #include "measure/pair_function.hpp"
+#include "workloads/batch_arrays.hpp"
 #include "workloads/finite_fields.hpp"
 
 namespace dyop::measure {
@@ -51,25 +52,16 @@ std::vector<StressAnswer> pair_answers(Method m, const std::vector<workloads::Ra
 template <class T>
 std::vector<StressAnswer> batch_answers(const std::vector<workloads::RawPair>& pairs) {
   const std::size_t n = pairs.size();
-  std::vector<T> c[12];
-  for (auto& v : c) v.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    for (int i = 0; i < 3; ++i) {
-      c[2 * i][k] = static_cast<T>(pairs[k].a[i].x());
-      c[2 * i + 1][k] = static_cast<T>(pairs[k].a[i].y());
-      c[6 + 2 * i][k] = static_cast<T>(pairs[k].b[i].x());
-      c[7 + 2 * i][k] = static_cast<T>(pairs[k].b[i].y());
-    }
-  }
-  const PairBatch<T> batch{c[0].data(), c[1].data(), c[2].data(), c[3].data(),
-                           c[4].data(), c[5].data(), c[6].data(), c[7].data(),
-                           c[8].data(), c[9].data(), c[10].data(), c[11].data(), n};
-  std::vector<Status> status(n);
-  std::vector<T> separation(n), nx(n), ny(n);
+  workloads::BatchArrays<T> arrays(n, [&](std::size_t k, int side, int i) {
+    return (side == 0 ? pairs[k].a[i] : pairs[k].b[i]).template cast<T>().eval();
+  });
+  const PairBatch<T> batch = arrays.pairs();
+  const std::vector<Status>& status = arrays.status;
+  const std::vector<T>& separation = arrays.separation;
+  const std::vector<T>& nx = arrays.normal_x;
+  const std::vector<T>& ny = arrays.normal_y;
   std::vector<StressAnswer> out(n);
-  if (penetrate_batch(batch, Level::Depth,
-                      BatchOutput<T>{status.data(), separation.data(), nx.data(), ny.data()}) !=
-      BatchError::None) {
+  if (penetrate_batch(batch, Level::Depth, arrays.out()) != BatchError::None) {
     for (StressAnswer& a : out) a.verdict_mismatch = true;
     return out;
   }
