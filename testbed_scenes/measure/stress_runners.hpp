@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "dyop/result.hpp"
-#include "workloads/pair_classes.hpp"
+#include "workloads/raw_pair.hpp"
 
 namespace dyop::report {
 
