@@ -24,15 +24,15 @@
 namespace {
 
 using namespace dyop;
-using workloads::BenchClass;
+using workloads::InputClass;
 using workloads::PairSet;
 
 constexpr int kPairs = 8192;
 constexpr std::uint64_t kSeed = 2026;
 
 template <class T>
-const PairSet<T>& pairs_of(BenchClass c) {
-  static std::map<BenchClass, PairSet<T>> sets;
+const PairSet<T>& pairs_of(InputClass c) {
+  static std::map<InputClass, PairSet<T>> sets;
   auto it = sets.find(c);
   if (it == sets.end()) it = sets.emplace(c, workloads::make_pair_set<T>(c, kPairs, kSeed)).first;
   return it->second;
@@ -44,7 +44,7 @@ const char* precision_name() {
 }
 
 template <class T>
-void bm_method(benchmark::State& state, Method m, BenchClass c, Level l) {
+void bm_method(benchmark::State& state, Method m, InputClass c, Level l) {
   const PairSet<T>& s = pairs_of<T>(c);
   const Query<T> q{l};
   std::size_t i = 0;
@@ -59,7 +59,7 @@ void bm_method(benchmark::State& state, Method m, BenchClass c, Level l) {
 // and every pass over the set alternates between two frames of a small motion, so each query
 // starts from the features of the previous frame.
 template <class T>
-void bm_warm(benchmark::State& state, Method m, BenchClass c, Level l) {
+void bm_warm(benchmark::State& state, Method m, InputClass c, Level l) {
   const PairSet<T>& s = pairs_of<T>(c);
   const Query<T> q{l};
   std::vector<LinCannyCache> cache(s.size());
@@ -79,7 +79,7 @@ void bm_warm(benchmark::State& state, Method m, BenchClass c, Level l) {
 
 // `pairs` 0: the class's distinct pairs (in cache); otherwise a streaming set of that many.
 template <class T>
-void bm_batch(benchmark::State& state, BenchClass c, Level l, std::size_t pairs) {
+void bm_batch(benchmark::State& state, InputClass c, Level l, std::size_t pairs) {
   const PairSet<T>& s = pairs_of<T>(c);
   // A streaming set repeats the distinct pairs; `state.iterations()` counts batches.
   workloads::BatchArrays<T> arrays(pairs == 0 ? s.size() : pairs,
@@ -99,8 +99,8 @@ void bm_batch(benchmark::State& state, BenchClass c, Level l, std::size_t pairs)
 
 #ifdef DYOP_WITH_BOX2D
 // Box2D's own narrow phase, which always builds the full manifold.
-void bm_box2d(benchmark::State& state, BenchClass c) {
-  static std::map<BenchClass, workloads::Box2DPairSet> sets;
+void bm_box2d(benchmark::State& state, InputClass c) {
+  static std::map<InputClass, workloads::Box2DPairSet> sets;
   auto it = sets.find(c);
   if (it == sets.end()) it = sets.emplace(c, workloads::make_box2d_pair_set(pairs_of<float>(c))).first;
   const workloads::Box2DPairSet& s = it->second;
@@ -173,7 +173,7 @@ void register_streams() {
 template <class T>
 void register_method(const MethodInfo& row) {
   if (!row.runs_double && !std::is_same_v<T, float>) return;
-  for (BenchClass c : workloads::all_bench_classes) {
+  for (InputClass c : workloads::bench_classes) {
     for (Level l : all_levels) {
       if (!row.has(l)) continue;
       const std::string tail = std::string("/") + workloads::name(c) + "/" + name(l) + "/" +
@@ -190,7 +190,7 @@ void register_method(const MethodInfo& row) {
           break;
         case Entry::Batch:
           benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_batch<T>, c, l, 0);
-          if (c == BenchClass::Overlapping || c == BenchClass::Mixed) {
+          if (c == InputClass::Overlapping || c == InputClass::Mixed) {
             // Streaming: 1M pairs, far beyond the caches (the memory floor).
             benchmark::RegisterBenchmark(bm((std::string(row.name) + "-stream-1M").c_str()).c_str(),
                                          bm_batch<T>, c, l, std::size_t{1} << 20);

@@ -17,7 +17,7 @@
 #include <cstring>
 #include <limits>
 
-#include "workloads/pair_classes.hpp"
+#include "workloads/raw_pair.hpp"
 
 namespace dyop::fuzz {
 

@@ -14,7 +14,7 @@
 #include "dyop/batch.hpp"
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
-#include "workloads/pair_classes.hpp"
+#include "workloads/input_classes.hpp"
 
 namespace dyop {
 namespace {
@@ -169,8 +169,8 @@ TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
   constexpr int kPerClass = 2500;
   const double tol = separation_tolerance<T>();
   std::ostringstream figures;
-  for (const auto c : workloads::all_pair_classes) {
-    const auto pairs = workloads::make_pairs(c, kPerClass, 5);
+  for (const auto c : workloads::test_classes) {
+    const auto pairs = workloads::make_valid_pairs(c, kPerClass, 5);
     const Columns<T> cols = columns<T>(pairs);
     Outputs<T> out(cols.size());
     ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, out), BatchError::None);
@@ -231,7 +231,7 @@ TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
 // Overlap computes the same statuses and writes nothing else (null arrays are then allowed).
 TYPED_TEST(Batch, OverlapLevelWritesTheSameStatusesAndNothingElse) {
   using T = typename TypeParam::T;
-  const auto pairs = workloads::make_pairs(workloads::PairClass::General, 1000, 11);
+  const auto pairs = workloads::make_valid_pairs(workloads::InputClass::General, 1000, 11);
   const Columns<T> cols = columns<T>(pairs);
   Outputs<T> depth(cols.size()), overlap(cols.size());
   ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, depth), BatchError::None);
@@ -252,7 +252,7 @@ TYPED_TEST(Batch, OverlapLevelWritesTheSameStatusesAndNothingElse) {
 // writes nothing past the end; count 0 writes nothing and needs no arrays.
 TYPED_TEST(Batch, AnyCountGivesTheSameRowsAndWritesNothingPastTheEnd) {
   using T = typename TypeParam::T;
-  const auto pairs = workloads::make_pairs(workloads::PairClass::General, 203, 3);
+  const auto pairs = workloads::make_valid_pairs(workloads::InputClass::General, 203, 3);
   const Columns<T> cols = columns<T>(pairs);
   Outputs<T> full(cols.size());
   ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, full), BatchError::None);
@@ -300,7 +300,7 @@ TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
        TriangleError::NonFinite,
        TriangleError::RepeatedVertex},
   };
-  const auto valid = workloads::make_pairs(workloads::PairClass::General, 40, 9);
+  const auto valid = workloads::make_valid_pairs(workloads::InputClass::General, 40, 9);
   for (std::size_t at : {0, 3, 7, 12, 37}) {  // lane 0, 3, 7, 4 of a block; 37: the tail
     SCOPED_TRACE(::testing::Message() << "bad rows from " << at);
     std::vector<RawPair> rows(valid.begin(), valid.end());
@@ -351,8 +351,8 @@ TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
   // float) cannot go. Float: min_size (9.1e-13) leaves no square out of range, so no row is redone.
   const double tiny = is_float ? 1e-11 : 1e-25;
   const double huge = is_float ? 1e17 : 1e25;
-  std::vector<RawPair> rows = workloads::make_pairs(workloads::PairClass::General, 21, 4);
-  const auto extra = workloads::make_pairs(workloads::PairClass::General, 6, 8);
+  std::vector<RawPair> rows = workloads::make_valid_pairs(workloads::InputClass::General, 21, 4);
+  const auto extra = workloads::make_valid_pairs(workloads::InputClass::General, 6, 8);
   std::vector<bool> beyond(rows.size(), false);
   for (std::size_t i = 0; i < extra.size(); ++i) {  // rows 1, 6, 11, 16, 21 and the last (tail)
     RawPair p = extra[i];
@@ -472,7 +472,7 @@ TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap)
 // Contact and Manifold are refused, as are missing arrays; nothing is written then.
 TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
   using T = typename TypeParam::T;
-  const Columns<T> cols = columns<T>(workloads::make_pairs(workloads::PairClass::General, 10, 1));
+  const Columns<T> cols = columns<T>(workloads::make_valid_pairs(workloads::InputClass::General, 10, 1));
   Outputs<T> out(cols.size());
   EXPECT_EQ(this->run(cols, cols.size(), Level::Contact, out), BatchError::UnsupportedLevel);
   EXPECT_EQ(this->run(cols, cols.size(), Level::Manifold, out), BatchError::UnsupportedLevel);

@@ -19,7 +19,7 @@
 #include "exact_reference/exact_reference.hpp"
 #include "program/pair_csv.hpp"
 #include "program/pairs_command.hpp"
-#include "workloads/stress_classes.hpp"
+#include "workloads/raw_pair.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop::workloads {

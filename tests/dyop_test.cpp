@@ -7,6 +7,7 @@
 #include "dyop/dyop.hpp"
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
+#include "workloads/input_classes.hpp"
 #include "support/make_triangle.hpp"
 
 namespace dyop::workloads {
@@ -38,8 +39,8 @@ void expect_same_result(const Result<T>& d, const Result<T>& s, T size) {
 
 // The pivot changes how the answer is found, never the answer, at every level.
 TEST(Dyop, EqualsSatAtEveryLevelOnEveryClass) {
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, 500, 11)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, 500, 11)) {
       const auto d = build<double>(p);
       const auto f = build<float>(p);
       for (Level level : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
@@ -62,8 +63,8 @@ TEST(Dyop, EqualsSatAtEveryLevelOnEveryClass) {
 // as with the distance, manifold included.
 TEST(Dyop, GapForPairsApartIsALowerBoundOnTheDistanceAndChangesNothingElse) {
   int apart = 0;
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, 300, 17)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, 300, 17)) {
       const auto d = build<double>(p);
       for (Level level : {Level::Depth, Level::Contact, Level::Manifold}) {
         Query<double> q{level, 0.05 * pair_size(p), 0.01 * pair_size(p)};
@@ -116,10 +117,10 @@ TEST(DyopFast, MissesCrossingsWhereNoPivotVertexIsInside) {
 // A pivot vertex strictly inside the other triangle is a proof of overlap: no false positives.
 TEST(DyopFast, NeverCallsAnApartPairPenetratingAndNeverReturnsNaN) {
   std::ostringstream figures;
-  for (PairClass c : all_pair_classes) {
+  for (InputClass c : test_classes) {
     int penetrating = 0, found = 0;
     double worst = 0;
-    for (const RawPair& p : make_pairs(c, 2000, 5)) {
+    for (const RawPair& p : make_valid_pairs(c, 2000, 5)) {
       const auto t = build<double>(p);
       const Result<double> fast = dyop_fast(t.a.triangle, t.b.triangle, {Level::Manifold});
       const ExactAnswer exact = exact_separation(p);

@@ -11,7 +11,7 @@
 
 #include "dyop/epa.hpp"
 #include "dyop/sat.hpp"
-#include "workloads/pair_classes.hpp"
+#include "workloads/input_classes.hpp"
 #include "support/make_triangle.hpp"
 #include "support/scalars.hpp"
 
@@ -275,9 +275,9 @@ TYPED_TEST(Epa, SwappingTheTrianglesReversesTheNormal) {
 // ---------------------------------------------------------------------------------------------
 // Randomized agreement with `sat` (double).
 
-using workloads::all_pair_classes;
+using workloads::test_classes;
 using workloads::build;
-using workloads::PairClass;
+using workloads::InputClass;
 using workloads::RawPair;
 
 // |epa − sat| / pair size on the separation. Measured (the summary this test prints, and 10 ×
@@ -319,10 +319,10 @@ struct Figures {
   int max_iterations = 0;
 };
 
-class EpaAgreesWithSat : public ::testing::TestWithParam<PairClass> {};
+class EpaAgreesWithSat : public ::testing::TestWithParam<InputClass> {};
 
 TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
-  const std::vector<RawPair> pairs = workloads::make_pairs(GetParam(), 3000, 20240611);
+  const std::vector<RawPair> pairs = workloads::make_valid_pairs(GetParam(), 3000, 20240611);
   Figures fig;
   for (const RawPair& p : pairs) {
     const auto t = build<double>(p);
@@ -378,8 +378,8 @@ TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
       static_cast<double>(fig.sum_iterations) / fig.pairs, fig.max_iterations);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryClass, EpaAgreesWithSat, ::testing::ValuesIn(all_pair_classes),
-                         [](const ::testing::TestParamInfo<PairClass>& info) {
+INSTANTIATE_TEST_SUITE_P(EveryClass, EpaAgreesWithSat, ::testing::ValuesIn(test_classes),
+                         [](const ::testing::TestParamInfo<InputClass>& info) {
                            std::string n = workloads::name(info.param);
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
@@ -387,8 +387,8 @@ INSTANTIATE_TEST_SUITE_P(EveryClass, EpaAgreesWithSat, ::testing::ValuesIn(all_p
 
 // Float: same classes, a looser bound (float's eps is 2^-23), and never a NaN.
 TEST(EpaFloat, AgreesWithSatInFloatOnRandomPairs) {
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : workloads::make_pairs(c, 500, 7)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : workloads::make_valid_pairs(c, 500, 7)) {
       const auto t = build<float>(p);
       if (!t.a.ok() || !t.b.ok()) continue;  // a double sliver may be flat in float
       const Result<float> e = epa(t.a.triangle, t.b.triangle, {Level::Manifold});

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 
 #include "dyop/lin_canny.hpp"
 #include "dyop/sat.hpp"
-#include "workloads/pair_classes.hpp"
+#include "workloads/input_classes.hpp"
+#include "workloads/random.hpp"
 #include "support/make_triangle.hpp"
 #include "support/scalars.hpp"
 
@@ -314,8 +314,8 @@ bool is_local_minimum(const AxisCycle& c, const Result<double>& r, double slack)
 
 TEST(LinCannyRandom, SeparatedDistanceEqualsSatsWithin1e12OfThePairSize) {
   int separated = 0;
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       const Result<double> s = sat(t.a.triangle, t.b.triangle, {Level::Contact});
       if (s.status != Status::Separated) continue;
@@ -336,8 +336,8 @@ TEST(LinCannyRandom, SeparatedDistanceEqualsSatsWithin1e12OfThePairSize) {
 // A local minimum above the band where the global one is within it could differ; on these classes
 // it never does.
 TEST(LinCannyRandom, StatusEqualsSatsOnEveryClass) {
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       EXPECT_EQ(lin_canny(t.a.triangle, t.b.triangle, {Level::Depth}).status,
                 sat(t.a.triangle, t.b.triangle, {Level::Depth}).status)
@@ -348,8 +348,8 @@ TEST(LinCannyRandom, StatusEqualsSatsOnEveryClass) {
 
 TEST(LinCannyRandom, DepthIsNeverBelowSatsAndIsALocalMinimumOfTheAxisCycle) {
   int penetrating = 0;
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       const Result<double> s = sat(t.a.triangle, t.b.triangle, {Level::Contact});
       const Result<double> r = lin_canny(t.a.triangle, t.b.triangle, {Level::Contact});
@@ -368,7 +368,7 @@ TEST(LinCannyRandom, DepthIsNeverBelowSatsAndIsALocalMinimumOfTheAxisCycle) {
 }
 
 TEST(LinCannyRandom, ExactlyTouchingPairsAreTouchingAtEveryLevel) {
-  for (const RawPair& p : make_pairs(PairClass::Touching, pairs_per_class, seed)) {
+  for (const RawPair& p : make_valid_pairs(InputClass::Touching, pairs_per_class, seed)) {
     const auto t = build<double>(p);
     for (Level level : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
       EXPECT_EQ(lin_canny(t.a.triangle, t.b.triangle, {level}).status, Status::Touching);
@@ -377,8 +377,8 @@ TEST(LinCannyRandom, ExactlyTouchingPairsAreTouchingAtEveryLevel) {
 }
 
 TEST(LinCannyRandom, OverlapLevelAgreesWithTheDepthLevelStatus) {
-  for (PairClass c : all_pair_classes) {
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+  for (InputClass c : test_classes) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       EXPECT_EQ(lin_canny(t.a.triangle, t.b.triangle, {Level::Overlap}).status,
                 lin_canny(t.a.triangle, t.b.triangle, {Level::Depth}).status)
@@ -390,9 +390,9 @@ TEST(LinCannyRandom, OverlapLevelAgreesWithTheDepthLevelStatus) {
 // A cache left by an unrelated pair is a valid start like any other: the walk ends on the same
 // distance.
 TEST(LinCannyRandom, WarmStartFromAnotherPairGivesTheColdDistance) {
-  for (PairClass c : all_pair_classes) {
+  for (InputClass c : test_classes) {
     LinCannyCache cache;
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       const Result<double> cold = lin_canny(t.a.triangle, t.b.triangle, {Level::Contact});
       const Result<double> warm = lin_canny(t.a.triangle, t.b.triangle, {Level::Contact}, &cache);
@@ -405,14 +405,13 @@ TEST(LinCannyRandom, WarmStartFromAnotherPairGivesTheColdDistance) {
 }
 
 // B moved rigidly by `step` of the pair's size, turned by `step` radians about its centroid.
-RawPair moved(const RawPair& p, double step, std::mt19937_64& rng) {
+RawPair moved(const RawPair& p, double step, Random& rng) {
   constexpr double pi = 3.14159265358979323846;
-  std::uniform_real_distribution<double> angle(0, 2 * pi);
-  const double heading = angle(rng);
+  const double heading = rng.uniform(0, 2 * pi);
   const Vec2<double> shift =
       step * pair_size(p) * Vec2<double>(std::cos(heading), std::sin(heading));
   const Vec2<double> centre = (p.b[0] + p.b[1] + p.b[2]) / 3;
-  const double turn = angle(rng) < pi ? step : -step;
+  const double turn = rng.coin() ? step : -step;
   const double cs = std::cos(turn);
   const double sn = std::sin(turn);
   RawPair q = p;
@@ -427,12 +426,12 @@ RawPair moved(const RawPair& p, double step, std::mt19937_64& rng) {
 // step; when the motion changed it the walk goes on from there, and a cold start may be luckier on
 // a single pair, but never over a class.
 TEST(LinCannyRandom, WarmStartTakesNoMoreIterationsAfterASmallMotion) {
-  std::mt19937_64 rng(seed);
-  for (PairClass c : {PairClass::General, PairClass::Apart, PairClass::Sliver,
-                      PairClass::NearParallel, PairClass::TinyAndHuge}) {
+  Random rng(seed);
+  for (InputClass c : {InputClass::General, InputClass::Apart, InputClass::Sliver,
+                      InputClass::NearParallel, InputClass::Scale}) {
     long cold_total = 0;
     long warm_total = 0;
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto t = build<double>(p);
       LinCannyCache cache;
       if (lin_canny(t.a.triangle, t.b.triangle, {Level::Contact}, &cache).status !=
@@ -460,7 +459,7 @@ TEST(LinCannyRandom, WarmStartTakesNoMoreIterationsAfterASmallMotion) {
 }
 
 TEST(LinCannyRandom, WarmStartOnAnUnchangedSeparatedPairConfirmsInOneStep) {
-  for (const RawPair& p : make_pairs(PairClass::Apart, pairs_per_class, seed)) {
+  for (const RawPair& p : make_valid_pairs(InputClass::Apart, pairs_per_class, seed)) {
     const auto t = build<double>(p);
     LinCannyCache cache;
     const Result<double> first = lin_canny(t.a.triangle, t.b.triangle, {Level::Contact}, &cache);
@@ -472,10 +471,10 @@ TEST(LinCannyRandom, WarmStartOnAnUnchangedSeparatedPairConfirmsInOneStep) {
 
 // Float and double, cold and warm (the cache carried along the suite), every level.
 TEST(LinCannyRandom, IterationsStayWithinTheStepBoundAndNoResultIsNanOrInf) {
-  for (PairClass c : all_pair_classes) {
+  for (InputClass c : test_classes) {
     LinCannyCache cache_d;
     LinCannyCache cache_f;
-    for (const RawPair& p : make_pairs(c, pairs_per_class, seed)) {
+    for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {
       const auto d = build<double>(p);
       const auto f = build<float>(p);
       for (Level level : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {

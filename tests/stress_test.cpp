@@ -9,14 +9,15 @@
 
 #include "dyop/method.hpp"
 #include "exact_reference/exact_reference.hpp"
+#include "workloads/input_classes.hpp"
 #include "report/stress_report.hpp"
 
 namespace dyop::report {
 namespace {
 
+using workloads::InputClass;
 using workloads::Precision;
 using workloads::RawPair;
-using workloads::StressClass;
 
 constexpr int kPairs = 400;  // per category and precision: about a second in Release
 
@@ -115,8 +116,8 @@ INSTANTIATE_TEST_SUITE_P(BothPrecisions, StressPromises,
 TEST(StressClasses, FloatPairsAreExactlyRepresentableInFloat) {
   // What the reference sees must be what a float program sees (a compiler that drops the round
   // trip would make every float figure measure input rounding instead).
-  for (StressClass c : workloads::all_stress_classes) {
-    for (const RawPair& p : workloads::make_stress_pairs(c, Precision::Float, 200, 3)) {
+  for (InputClass c : workloads::stress_classes) {
+    for (const RawPair& p : workloads::make_pairs(c, 200, 3, Precision::Float)) {
       for (const auto* t : {&p.a, &p.b}) {
         for (const Vec2<double>& v : *t) {
           ASSERT_EQ(double(float(v.x())), v.x()) << workloads::name(c);
@@ -128,9 +129,9 @@ TEST(StressClasses, FloatPairsAreExactlyRepresentableInFloat) {
 }
 
 TEST(StressClasses, TheSameSeedGivesTheSamePairs) {
-  for (StressClass c : workloads::all_stress_classes) {
-    const auto x = workloads::make_stress_pairs(c, Precision::Double, 50, 11);
-    const auto y = workloads::make_stress_pairs(c, Precision::Double, 50, 11);
+  for (InputClass c : workloads::stress_classes) {
+    const auto x = workloads::make_pairs(c, 50, 11, Precision::Double);
+    const auto y = workloads::make_pairs(c, 50, 11, Precision::Double);
     ASSERT_EQ(x.size(), 50u);
     for (std::size_t k = 0; k < x.size(); ++k) {
       EXPECT_EQ(x[k].a, y[k].a);
@@ -142,7 +143,7 @@ TEST(StressClasses, TheSameSeedGivesTheSamePairs) {
 TEST(StressClasses, OffsetsReachButDoNotPassTheirLimit) {
   for (Precision p : {Precision::Double, Precision::Float}) {
     double farthest = 0;
-    for (const RawPair& q : workloads::make_stress_pairs(StressClass::Offset, p, 500, 5)) {
+    for (const RawPair& q : workloads::make_pairs(InputClass::Far, 500, 5, p)) {
       farthest = std::max(farthest, q.a[0].norm());
     }
     EXPECT_GT(farthest, 0.5 * workloads::max_offset(p));
@@ -155,7 +156,7 @@ TEST(StressClasses, TouchingPairsAreWithinAFewUlpsOfTouchingOnBothSides) {
     const double eps = p == Precision::Float ? 1.2e-7 : 2.3e-16;
     int in = 0;
     int out = 0;
-    for (const RawPair& q : workloads::make_stress_pairs(StressClass::TouchingUlp, p, 300, 9)) {
+    for (const RawPair& q : workloads::make_pairs(InputClass::TouchingUlp, 300, 9, p)) {
       const workloads::ExactAnswer e = workloads::exact_separation(q);
       // A few ulps of coordinates up to 1e3 (float: 10) from the origin, for pairs of size ~1.
       const double reach = q.a[0].norm() + 2;
@@ -171,7 +172,7 @@ TEST(StressClasses, TouchingPairsAreWithinAFewUlpsOfTouchingOnBothSides) {
 TEST(StressClasses, ScalesSpanSixteenOrdersOfMagnitude) {
   double least = INFINITY;
   double most = 0;
-  for (const RawPair& q : workloads::make_stress_pairs(StressClass::Scale, Precision::Double, 500, 4)) {
+  for (const RawPair& q : workloads::make_pairs(InputClass::Scale, 500, 4, Precision::Double)) {
     const double s = workloads::pair_size(q);
     least = std::min(least, s);
     most = std::max(most, s);

@@ -30,6 +30,9 @@ const char* describe(ShapeError e) {
       return "two vertices closer than 0.5 * b2_linearSlop (Box2D would weld them and assert)";
     case ShapeError::AreaTooSmall:
       return "area below dyop::box2d::min_triangle_area (Box2D's centroid would assert)";
+    case ShapeError::TooLarge:
+      return "a coordinate beyond dyop::box2d::max_triangle_coordinate (Box2D's inertia would "
+             "overflow float)";
   }
   return "unknown shape error";
 }
@@ -39,6 +42,11 @@ TriangleShape make_triangle(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2
       Triangle<float>::make(Vec2<float>(p0.x, p0.y), Vec2<float>(p1.x, p1.y),
                             Vec2<float>(p2.x, p2.y));
   if (!t.ok()) return failure(ShapeError::Triangle, t.error);
+  for (const b2Vec2& p : {p0, p1, p2}) {
+    if (!(std::abs(p.x) <= max_triangle_coordinate && std::abs(p.y) <= max_triangle_coordinate)) {
+      return failure(ShapeError::TooLarge);
+    }
+  }
   if (welded(p0, p1) || welded(p1, p2) || welded(p2, p0)) {
     return failure(ShapeError::VerticesTooClose);
   }

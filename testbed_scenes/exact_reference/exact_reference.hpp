@@ -6,7 +6,7 @@
 // and L exact rationals, evaluated as a 256-bit float (rounding far below double's). Distance when
 // apart = the least of the 18 exact vertex–segment distances.
 
-#include "workloads/pair_classes.hpp"
+#include "workloads/raw_pair.hpp"
 
 namespace dyop::workloads {
 

@@ -9,7 +9,7 @@
 
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
-#include "workloads/pair_classes.hpp"
+#include "workloads/raw_pair.hpp"
 
 namespace dyop::measure {
 

@@ -88,7 +88,7 @@ void measure_errors(const std::vector<measure::Answer<T>>& got, const Reference&
 }
 
 template <class T>
-void run_precision(const BenchOptions& options, workloads::BenchClass c,
+void run_precision(const BenchOptions& options, workloads::InputClass c,
                    std::map<std::string, double>& box2d_ns, std::vector<BenchRecord>& records,
                    std::ostream& progress) {
   constexpr bool is_float = std::is_same_v<T, float>;
@@ -146,7 +146,7 @@ std::vector<const BenchRecord*> pareto_front(std::vector<const BenchRecord*> poi
 std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& progress) {
   std::vector<BenchRecord> records;
   std::map<std::string, double> box2d_ns;
-  for (workloads::BenchClass c : workloads::all_bench_classes) {
+  for (workloads::InputClass c : workloads::bench_classes) {
     run_precision<float>(options, c, box2d_ns, records, progress);
     run_precision<double>(options, c, box2d_ns, records, progress);
   }

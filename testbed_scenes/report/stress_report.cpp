@@ -6,19 +6,19 @@
 #include <cstdio>
 #include <map>
 #include <ostream>
-#include <random>
 #include <type_traits>
 
 #include "exact_reference/exact_reference.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::report {
 namespace {
 
 using measure::StressAnswer;
 using workloads::ExactAnswer;
+using workloads::InputClass;
 using workloads::Precision;
 using workloads::RawPair;
-using workloads::StressClass;
 using V = Vec2<double>;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -48,13 +48,12 @@ V centre(const RawPair& p) {
 // The pair under one Invariance, drawn from `rng`: moved by 1 to 100 times its size, turned by
 // any angle about its own centre (turning about the world origin would mostly measure the rounding
 // of large coordinates), reordered, or swapped. Moved pairs are rounded to the precision again.
-RawPair variant(Invariance which, const RawPair& p, Precision precision, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+RawPair variant(Invariance which, const RawPair& p, Precision precision, workloads::Random& rng) {
   RawPair out = p;
   switch (which) {
     case Invariance::Translation: {
-      const double t = 2 * kPi * unit(rng);
-      const V shift = workloads::pair_size(p) * std::pow(10.0, 2 * unit(rng)) *
+      const double t = 2 * kPi * rng.unit();
+      const V shift = workloads::pair_size(p) * std::pow(10.0, 2 * rng.unit()) *
                       V(std::cos(t), std::sin(t));
       for (auto* tri : {&out.a, &out.b}) {
         for (V& v : *tri) v += shift;
@@ -62,7 +61,7 @@ RawPair variant(Invariance which, const RawPair& p, Precision precision, std::mt
       return workloads::rounded_to(precision, out);
     }
     case Invariance::Rotation: {
-      const double t = 2 * kPi * unit(rng);
+      const double t = 2 * kPi * rng.unit();
       const double c = std::cos(t);
       const double s = std::sin(t);
       const V o = centre(p);
@@ -75,7 +74,7 @@ RawPair variant(Invariance which, const RawPair& p, Precision precision, std::mt
       return workloads::rounded_to(precision, out);
     }
     case Invariance::Reorder:
-      std::rotate(out.a.begin(), out.a.begin() + 1 + static_cast<int>(rng() % 2), out.a.end());
+      std::rotate(out.a.begin(), out.a.begin() + 1 + rng.below(2), out.a.end());
       std::swap(out.b[1], out.b[2]);
       return out;
     case Invariance::Swap: return RawPair{p.b, p.a};
@@ -93,11 +92,11 @@ struct Category {
 };
 
 template <class T>
-Category prepare(StressClass c, Precision precision, const StressOptions& o) {
+Category prepare(InputClass c, Precision precision, const StressOptions& o) {
   Category cat;
-  cat.pairs[0] = workloads::make_stress_pairs(c, precision, o.pairs, o.seed);
-  std::mt19937_64 rng(o.seed * 31 + static_cast<std::uint64_t>(c) * 2 +
-                      (precision == Precision::Float ? 1 : 0));
+  cat.pairs[0] = workloads::make_pairs(c, o.pairs, o.seed, precision);
+  workloads::Random rng(o.seed * 31 + static_cast<std::uint64_t>(c) * 2 +
+                        (precision == Precision::Float ? 1 : 0));
   for (const RawPair& p : cat.pairs[0]) {
     for (int v = 1; v < kVariants; ++v) {
       cat.pairs[v].push_back(variant(static_cast<Invariance>(v - 1), p, precision, rng));
@@ -130,7 +129,7 @@ Category prepare(StressClass c, Precision precision, const StressOptions& o) {
 }
 
 template <class T>
-StressRecord measure(Method r, StressClass c, const Category& cat) {
+StressRecord measure(Method r, InputClass c, const Category& cat) {
   const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
   StressRecord rec;
   rec.runner = r;
@@ -201,7 +200,7 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
                    std::ostream& progress) {
   constexpr bool is_float = std::is_same_v<T, float>;
   const Precision precision = is_float ? Precision::Float : Precision::Double;
-  for (StressClass c : workloads::all_stress_classes) {
+  for (InputClass c : workloads::stress_classes) {
     const auto start = std::chrono::steady_clock::now();
     const Category cat = prepare<T>(c, precision, o);
     int rejected = 0;
@@ -315,7 +314,7 @@ void write_json(const std::vector<StressRecord>& records, std::ostream& out) {
 
 void write_markdown(const std::vector<StressRecord>& records, std::ostream& out) {
   std::vector<std::string> classes;
-  for (StressClass c : workloads::all_stress_classes) classes.push_back(workloads::name(c));
+  for (InputClass c : workloads::stress_classes) classes.push_back(workloads::name(c));
   for (const char* precision : {"double", "float"}) {
     std::map<std::string, std::map<std::string, const StressRecord*>> by_method;
     std::vector<std::string> methods;

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "measure/stress_runners.hpp"
-#include "workloads/stress_classes.hpp"
+#include "workloads/input_classes.hpp"
 
 namespace dyop::report {
 
@@ -58,7 +58,7 @@ const char* name(Invariance i);
 struct StressRecord {
   Method runner = Method::Dyop;  ///< what ran
   std::string method;            ///< `variant_name(runner, false)`: every run is cold
-  std::string cls;        ///< category (`workloads::name(StressClass)`)
+  std::string cls;               ///< category (`workloads::name(InputClass)`)
   std::string precision;  ///< "double" or "float"
   int pairs = 0;          ///< pairs generated
   /// Pairs with a triangle that `Triangle<T>::make` rejects (degenerate, too large, ...): each

@@ -4,32 +4,35 @@
 
 #include <string_view>
 
-#include "scenes/random.hpp"
 #include "scenes/world_scene.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::scenes::detail {
 
-WorldBuild build_pyramid(World& world, Rng& rng);
-WorldBuild build_pyramid_rows(World& world, Rng& rng);
-WorldBuild build_stack(World& world, Rng& rng);
-WorldBuild build_stack_concave(World& world, Rng& rng);
-WorldBuild build_rain(World& world, Rng& rng);
+WorldBuild build_pyramid(World& world, workloads::Random& rng);
+WorldBuild build_pyramid_rows(World& world, workloads::Random& rng);
+WorldBuild build_stack(World& world, workloads::Random& rng);
+WorldBuild build_stack_concave(World& world, workloads::Random& rng);
+WorldBuild build_rain(World& world, workloads::Random& rng);
 /// `rain` with `falling` triangles (the catalogue's has `rain_triangles`).
-WorldBuild build_rain_of(World& world, Rng& rng, int falling);
-WorldBuild build_tumbler(World& world, Rng& rng);
-WorldBuild build_slivers(World& world, Rng& rng);
-WorldBuild build_slivers_far(World& world, Rng& rng);
-WorldBuild build_mixed(World& world, Rng& rng);
+WorldBuild build_rain_of(World& world, workloads::Random& rng, int falling);
+WorldBuild build_tumbler(World& world, workloads::Random& rng);
+WorldBuild build_slivers(World& world, workloads::Random& rng);
+WorldBuild build_slivers_far(World& world, workloads::Random& rng);
+WorldBuild build_mixed(World& world, workloads::Random& rng);
 
 /// The builder of the catalogue's Box2D scene `name`, or nullptr (unknown, or `paper`, which has
-/// no Box2D world). Seed its `Rng` with the scene's seed, as `make_scene` does.
+/// no Box2D world). Seed its `workloads::Random` with the scene's seed, as `make_scene` does.
 const WorldBuilder* find_builder(std::string_view name);
 
 /// A dynamic body at `position`, turned at random, holding one irregular triangle whose vertices
 /// lie 0.75 to 1 × `radius` from the body origin, at angles at least 0.5 rad apart (so no sliver).
-b2Body* add_random_triangle(World& world, Rng& rng, const b2Vec2& position, double radius);
+b2Body* add_random_triangle(World& world, workloads::Random& rng, const b2Vec2& position,
+                            double radius);
 
 /// Up to ±`amount` metres, for placement jitter.
-inline float jitter(Rng& rng, double amount) { return rng.uniformf(-amount, amount); }
+inline float jitter(workloads::Random& rng, double amount) {
+  return rng.uniformf(-amount, amount);
+}
 
 }  // namespace dyop::scenes::detail

@@ -104,7 +104,9 @@ std::unique_ptr<Scene> make_rain(int falling, const Runner& runner, std::uint64_
   if (falling < 1) throw std::invalid_argument("rain needs at least one falling triangle");
   return std::make_unique<WorldScene>(
       "rain", runner, seed, skips,
-      [falling](World& world, Rng& rng) { return detail::build_rain_of(world, rng, falling); });
+      [falling](World& world, workloads::Random& rng) {
+        return detail::build_rain_of(world, rng, falling);
+      });
 }
 
 SceneMetrics run_scene(std::string_view name, const Runner& runner, int steps, std::uint64_t seed,

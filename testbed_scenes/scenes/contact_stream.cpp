@@ -155,7 +155,7 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
   stream.seed = seed;
   stream.steps = steps;
   World world;
-  Rng rng(seed);
+  workloads::Random rng(seed);
   (*build)(world, rng);
   const CollideRule rule(world.get());
   // The id of every live polygon contact. Keyed by the contact itself: Box2D may reuse a freed

@@ -23,7 +23,7 @@ void add_solid(b2Body* body, const b2Shape& shape) {
 
 }  // namespace
 
-WorldBuild build_mixed(World& world, Rng& rng) {
+WorldBuild build_mixed(World& world, workloads::Random& rng) {
   b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f));
   add_edge(ground, b2Vec2(-10.0f, 0.0f), b2Vec2(10.0f, 0.0f));
   add_edge(ground, b2Vec2(-10.0f, 0.0f), b2Vec2(-10.0f, 12.0f));

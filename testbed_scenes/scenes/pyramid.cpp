@@ -13,7 +13,7 @@ constexpr double kJitter = 0.001;  // m, horizontal placement noise from the see
 
 }  // namespace
 
-WorldBuild build_pyramid(World& world, Rng& rng) {
+WorldBuild build_pyramid(World& world, workloads::Random& rng) {
   add_triangle_ground(world, 10.0f);
   // Cores 1 cm apart (Box2D rests them 1.5 cm apart: the skins' sum less the slop), so nothing
   // starts overlapping.
@@ -28,7 +28,7 @@ WorldBuild build_pyramid(World& world, Rng& rng) {
   return {{top}};
 }
 
-WorldBuild build_pyramid_rows(World& world, Rng& rng) {
+WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
   // Equilateral triangles of side 1. Row r holds kBase − r upward triangles with a downward one
   // between each two; the next row's upward triangles stand on the downward ones' flat tops.
   constexpr float kSide = 1.0f;

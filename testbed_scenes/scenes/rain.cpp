@@ -7,7 +7,7 @@
 
 namespace dyop::scenes::detail {
 
-WorldBuild build_rain_of(World& world, Rng& rng, int falling) {
+WorldBuild build_rain_of(World& world, workloads::Random& rng, int falling) {
   // A grid of 1 m cells from 2 m up, about as many columns as rows but at least 22 (500: 22
   // columns, 23 rows); each triangle (radius at most 0.48 m) stays in its cell, so none starts
   // overlapping. The bin is as wide as the grid and its walls grow with it (12 m for 22 columns).
@@ -25,6 +25,8 @@ WorldBuild build_rain_of(World& world, Rng& rng, int falling) {
   return {};
 }
 
-WorldBuild build_rain(World& world, Rng& rng) { return build_rain_of(world, rng, rain_triangles); }
+WorldBuild build_rain(World& world, workloads::Random& rng) {
+  return build_rain_of(world, rng, rain_triangles);
+}
 
 }  // namespace dyop::scenes::detail

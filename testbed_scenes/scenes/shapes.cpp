@@ -4,7 +4,8 @@
 
 namespace dyop::scenes::detail {
 
-b2Body* add_random_triangle(World& world, Rng& rng, const b2Vec2& position, double radius) {
+b2Body* add_random_triangle(World& world, workloads::Random& rng, const b2Vec2& position,
+                            double radius) {
   constexpr double kTwoPi = 6.283185307179586;
   constexpr double kMinGap = 0.5;  // rad between vertices: the thinnest angle stays above ~14°
   // Three gaps of at least kMinGap summing to a full turn.

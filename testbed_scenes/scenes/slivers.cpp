@@ -9,7 +9,8 @@ namespace dyop::scenes::detail {
 namespace {
 
 // A dynamic sliver: `length` long, `thickness` high, its apex anywhere along the top.
-b2Body* add_sliver(World& world, Rng& rng, const b2Vec2& position, float length, float thickness) {
+b2Body* add_sliver(World& world, workloads::Random& rng, const b2Vec2& position, float length,
+                   float thickness) {
   const float apex = length * rng.uniformf(-0.3, 0.3);
   const b2Vec2 c((apex) / 3, thickness / 3);  // centroid, so the body origin is its centre
   b2Body* body = add_body(world, b2_dynamicBody, position, rng.uniformf(-0.5, 0.5));
@@ -18,7 +19,7 @@ b2Body* add_sliver(World& world, Rng& rng, const b2Vec2& position, float length,
   return body;
 }
 
-WorldBuild build(World& world, Rng& rng, const b2Vec2& offset) {
+WorldBuild build(World& world, workloads::Random& rng, const b2Vec2& offset) {
   b2Body* bin = add_triangle_bin(world, 10.0f, 10.0f);
   bin->SetTransform(offset, 0.0f);
   // Bottom: six large triangles (2 to 3 m across) in 3.2 m cells.
@@ -50,9 +51,11 @@ WorldBuild build(World& world, Rng& rng, const b2Vec2& offset) {
 
 }  // namespace
 
-WorldBuild build_slivers(World& world, Rng& rng) { return build(world, rng, b2Vec2(0.0f, 0.0f)); }
+WorldBuild build_slivers(World& world, workloads::Random& rng) {
+  return build(world, rng, b2Vec2(0.0f, 0.0f));
+}
 
-WorldBuild build_slivers_far(World& world, Rng& rng) {
+WorldBuild build_slivers_far(World& world, workloads::Random& rng) {
   // 10 km along the diagonal: both coordinates lose precision.
   const float d = static_cast<float>(10000.0 / std::sqrt(2.0));
   return build(world, rng, b2Vec2(d, d));

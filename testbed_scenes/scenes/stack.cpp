@@ -4,7 +4,7 @@
 
 namespace dyop::scenes::detail {
 
-WorldBuild build_stack(World& world, Rng& rng) {
+WorldBuild build_stack(World& world, workloads::Random& rng) {
   constexpr int kStacks = 3;
   constexpr int kBoxes = 10;
   constexpr float kHalf = 0.5f;
@@ -26,7 +26,7 @@ WorldBuild build_stack(World& world, Rng& rng) {
   return build;
 }
 
-WorldBuild build_stack_concave(World& world, Rng& rng) {
+WorldBuild build_stack_concave(World& world, workloads::Random& rng) {
   // 24 bodies on a 4 × 6 grid of 3.8 m cells, each centred in its cell at a random angle: the
   // widest (the U) reaches 1.8 m from its centre, so no two start overlapping.
   constexpr int kColumns = 4;

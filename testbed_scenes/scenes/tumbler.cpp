@@ -6,7 +6,7 @@
 
 namespace dyop::scenes::detail {
 
-WorldBuild build_tumbler(World& world, Rng& rng) {
+WorldBuild build_tumbler(World& world, workloads::Random& rng) {
   constexpr float kInner = 6.0f;  // half the inside width
   constexpr float kWall = 0.5f;
   constexpr float kSpin = 0.3f;  // rad/s: a turn every 21 s

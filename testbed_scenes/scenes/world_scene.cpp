@@ -39,7 +39,7 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
       skips_(skips),
       installation_(runner, skips),
       world_(std::make_unique<World>()) {
-  Rng rng(seed);
+  workloads::Random rng(seed);
   build_ = build(*world_, rng);
   // Box2D's own contact answers as `b2CollidePolygons`, which is what the probe checks for `box2d`.
   probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D), world_->get());

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "scenes/contact_probe.hpp"
-#include "scenes/random.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::scenes {
 
@@ -35,7 +35,7 @@ struct WorldBuild {
 inline constexpr int settle_steps = 60;
 
 /// Fills an empty world (gravity −10 m/s² along y) for a seed.
-using WorldBuilder = std::function<WorldBuild(World& world, Rng& rng)>;
+using WorldBuilder = std::function<WorldBuild(World& world, workloads::Random& rng)>;
 
 /// A Box2D scene.
 class WorldScene : public Scene {

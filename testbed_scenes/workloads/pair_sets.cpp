@@ -3,19 +3,16 @@
 #include <cmath>
 #include <type_traits>
 
-#include "workloads/stress_classes.hpp"
-
 namespace dyop::workloads {
 
 template <class T>
-PairSet<T> make_pair_set(BenchClass c, int count, std::uint64_t seed) {
+PairSet<T> make_pair_set(InputClass c, int count, std::uint64_t seed) {
   PairSet<T> set;
   // The next frame turns B by a thousandth of a radian about its first vertex and moves it by a
   // thousandth of the pair's size: the motion of one step of a simulation.
   const double turn = 1e-3;
-  for (const RawPair& p : make_bench_pairs(c, count, seed)) {
-    // As T holds them (rounding through stress_classes' guard against a GCC 12 folding bug).
-    const RawPair q = std::is_same_v<T, float> ? rounded_to_float(p) : p;
+  const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
+  for (const RawPair& q : make_pairs(c, count, seed, precision)) {
     const BuiltPair<T> now = build<T>(q);
     RawPair moved = q;
     const Vec2<double> pivot = q.b[0];
@@ -35,7 +32,7 @@ PairSet<T> make_pair_set(BenchClass c, int count, std::uint64_t seed) {
   return set;
 }
 
-template PairSet<float> make_pair_set(BenchClass, int, std::uint64_t);
-template PairSet<double> make_pair_set(BenchClass, int, std::uint64_t);
+template PairSet<float> make_pair_set(InputClass, int, std::uint64_t);
+template PairSet<double> make_pair_set(InputClass, int, std::uint64_t);
 
 }  // namespace dyop::workloads

@@ -1,11 +1,11 @@
 // collide_triangles: Box2D's own answer (b2CollidePolygons, then b2Distance when apart) under the
 // library's conventions, as `dyop pairs --method box2d` prints it.
 #include <iostream>
-#include <random>
 
 #include "box2d_reference/collide_triangles.hpp"
 #include "dyop/sat.hpp"
 #include "scene.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -62,22 +62,28 @@ TEST(CollideTriangles, SeparatedPairGivesBox2DsGjkDistance) {
 
 TEST(CollideTriangles, AgreesWithSatOnRandomPairsUpToBox2DsOwnChoices) {
   // Triangles of size ~1 in a 3 m square: overlapping about a third of the time.
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> coordinate(-1.5f, 1.5f);
-  std::uniform_real_distribution<float> offset(-0.7f, 0.7f);
+  workloads::Random rng(11);
+  // A point in the square of half side `half`, its draws in order (a call's arguments are not).
+  auto point = [&](double half) {
+    const float x = rng.uniformf(-half, half);
+    const float y = rng.uniformf(-half, half);
+    return V(x, y);
+  };
+  auto triangle = [&](const V& centre) {
+    const V p = centre + point(0.7);
+    const V q = centre + point(0.7);
+    const V r = centre + point(0.7);
+    return Triangle<float>::make(p, q, r);
+  };
   int penetrating = 0;
   int separated = 0;
   float worst_distance = 0;
   float worst_depth = 0;
   for (int pair = 0; pair < 5000; ++pair) {
-    const V ca(coordinate(rng), coordinate(rng));
-    const V cb(coordinate(rng), coordinate(rng));
-    const auto a = Triangle<float>::make(ca + V(offset(rng), offset(rng)),
-                                         ca + V(offset(rng), offset(rng)),
-                                         ca + V(offset(rng), offset(rng)));
-    const auto b = Triangle<float>::make(cb + V(offset(rng), offset(rng)),
-                                         cb + V(offset(rng), offset(rng)),
-                                         cb + V(offset(rng), offset(rng)));
+    const V ca = point(1.5);
+    const V cb = point(1.5);
+    const auto a = triangle(ca);
+    const auto b = triangle(cb);
     if (!a.ok() || !b.ok()) continue;
     const Result<float> box2d = collide_triangles(a.triangle, b.triangle);
     const Result<float> exact = sat(a.triangle, b.triangle);

@@ -76,6 +76,26 @@ TEST(MakeTriangle, RejectsThinTrianglesWhoseAreaBox2DsCentroidAssertsOn) {
   EXPECT_DEATH(box2d_set(p0, p1, p2), "ComputeCentroid") << "Box2D asserts on these points";
 }
 
+TEST(MakeTriangle, RejectsTrianglesWhoseInertiaWouldOverflowFloat) {
+  // 1.3e10 m across (found by the stress shapes test): Box2D's inertia at density 1 is infinite.
+  const b2Vec2 p0(0.0f, 0.0f), p1(4.1e9f, -3.1e9f), p2(1.3e10f, 1.2e9f);
+  b2PolygonShape shape;
+  const b2Vec2 points[3] = {p0, p1, p2};
+  shape.Set(points, 3);
+  b2MassData mass;
+  shape.ComputeMass(&mass, 1.0f);
+  ASSERT_FALSE(std::isfinite(mass.I)) << "Box2D's inertia of these points overflows";
+  const TriangleShape t = make_triangle(p0, p1, p2);
+  EXPECT_EQ(t.error, ShapeError::TooLarge);
+  EXPECT_NE(std::string(t.message).find("inertia"), std::string::npos) << t.message;
+  // At the limit the inertia is finite.
+  const b2Vec2 q1(max_triangle_coordinate, 0.0f), q2(0.0f, max_triangle_coordinate);
+  const TriangleShape ok = make_triangle(p0, q1, q2);
+  ASSERT_TRUE(ok.ok()) << ok.message;
+  ok.shape.ComputeMass(&mass, 100.0f);
+  EXPECT_TRUE(std::isfinite(mass.I));
+}
+
 TEST(MakeTriangle, AcceptsSmallButSoundTriangles) {
   // 1 cm sides: every vertex 1 cm from the others, area 5e-5 m².
   const TriangleShape t = make_triangle(b2Vec2(0, 0), b2Vec2(0.01f, 0), b2Vec2(0, 0.01f));

@@ -8,10 +8,10 @@
 // Those near-ties are detected beforehand, in double, counted, reported and excluded; only them.
 #include <cmath>
 #include <iostream>
-#include <random>
 
 #include "dyop/sat.hpp"
 #include "scene.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -131,14 +131,12 @@ Result<double> exact(const Placed& a, const Placed& b) {
   return sat(ta.triangle, tb.triangle);
 }
 
-b2PolygonShape random_triangle(std::mt19937& rng) {
-  std::uniform_real_distribution<float> radius(0.1f, 1.0f);
-  std::uniform_real_distribution<float> angle(0.0f, 2 * b2_pi);
+b2PolygonShape random_triangle(workloads::Random& rng) {
   for (;;) {
-    const float r = radius(rng);
+    const float r = rng.uniformf(0.1, 1.0);
     b2Vec2 p[3];
     for (b2Vec2& v : p) {
-      const float a = angle(rng);
+      const float a = rng.uniformf(0.0, 2 * b2_pi);
       v.Set(r * std::cos(a), r * std::sin(a));
     }
     const TriangleShape t = make_triangle(p[0], p[1], p[2]);
@@ -201,21 +199,27 @@ Difference compare(const b2Manifold& ours, const b2Manifold& box2d, const b2Poly
 class ManifoldAgreement : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ManifoldAgreement, MatchesB2CollidePolygonsOnRandomRestingAndPenetratingPairs) {
-  std::mt19937 rng(20240611);
-  std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
-  std::uniform_real_distribution<float> angle(-b2_pi, b2_pi);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  workloads::Random rng(20240611);
+  // Each draw a statement of its own: a call's arguments are evaluated in no fixed order.
+  auto angle = [&] { return rng.uniformf(-b2_pi, b2_pi); };
+  auto point = [&](double half) {
+    const float x = rng.uniformf(-half, half);
+    const float y = rng.uniformf(-half, half);
+    return b2Vec2(x, y);
+  };
   Figures fig;
   for (int pair = 0; pair < kPairs; ++pair) {
     const b2PolygonShape a = random_triangle(rng);
     const b2PolygonShape b = random_triangle(rng);
     const float margin = a.m_radius + b.m_radius;
-    b2Transform xf_a(b2Vec2(coordinate(rng), coordinate(rng)), b2Rot(angle(rng)));
-    b2Transform xf_b(xf_a.p + b2Vec2(0.5f * angle(rng), 0.5f * angle(rng)), b2Rot(angle(rng)));
+    const b2Vec2 at_a = point(10.0);
+    b2Transform xf_a(at_a, b2Rot(angle()));
+    const b2Vec2 at_b = xf_a.p + 0.5f * point(b2_pi);
+    b2Transform xf_b(at_b, b2Rot(angle()));
     // Resting: the cores from slightly overlapping to the skins just touching. Penetrating: up
     // to a quarter of the smaller triangle's size. B moves along the exact normal until there.
-    const double target = pair % 2 ? -b2_linearSlop + unit(rng) * (margin + b2_linearSlop)
-                                   : -0.05 - 0.2 * unit(rng);
+    const double target = pair % 2 ? -b2_linearSlop + rng.unit() * (margin + b2_linearSlop)
+                                   : -0.05 - 0.2 * rng.unit();
     for (int k = 0; k < 3; ++k) {
       const Result<double> r = exact(place(a, xf_a), place(b, xf_b));
       const V move = (target - r.separation) * r.normal;

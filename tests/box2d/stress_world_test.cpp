@@ -3,11 +3,11 @@
 // No Box2D assert (they are live in the Debian build: an assert aborts the test), no NaN, no
 // explosion; and hostile points are refused by `make_triangle` before Box2D sees them.
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "scene.hpp"
-#include "workloads/stress_classes.hpp"
+#include "workloads/input_classes.hpp"
+#include "workloads/random.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -64,22 +64,22 @@ void build(World& world, const b2Vec2& offset) {
   ground->SetTransform(offset, 0.0f);
   add_dynamic_triangle(world, offset + b2Vec2(-6.0f, 1.5f), 0.0f, b2Vec2(-8, 0), b2Vec2(8, 0),
                        b2Vec2(4, 4));
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> turn(-0.6f, 0.6f);
+  workloads::Random rng(7);
+  auto turn = [&] { return rng.uniformf(-0.6, 0.6); };
   const float thickness[] = {2e-5f, 1e-4f, 1e-3f, 1e-2f};
   for (int k = 0; k < 24; ++k) {
     const b2Vec2 at = offset + b2Vec2(-12.0f + 2.0f * (k % 12), 7.0f + 1.5f * (k / 12));
     switch (k % 3) {
       case 0: {  // sliver, 1 m long
         const float h = thickness[(k / 3) % 4];
-        add_dynamic_triangle(world, at, turn(rng), b2Vec2(-0.5f, 0), b2Vec2(0.5f, 0), b2Vec2(0.1f, h));
+        add_dynamic_triangle(world, at, turn(), b2Vec2(-0.5f, 0), b2Vec2(0.5f, 0), b2Vec2(0.1f, h));
         break;
       }
       case 1:  // tiny: 1 cm legs
-        add_dynamic_triangle(world, at, turn(rng), b2Vec2(0, 0), b2Vec2(0.01f, 0), b2Vec2(0, 0.01f));
+        add_dynamic_triangle(world, at, turn(), b2Vec2(0, 0), b2Vec2(0.01f, 0), b2Vec2(0, 0.01f));
         break;
       default:  // large-ish: 2 m
-        add_dynamic_triangle(world, at, turn(rng), b2Vec2(-1, 0), b2Vec2(1, 0), b2Vec2(0.3f, 1.5f));
+        add_dynamic_triangle(world, at, turn(), b2Vec2(-1, 0), b2Vec2(1, 0), b2Vec2(0.3f, 1.5f));
     }
   }
 }
@@ -143,14 +143,13 @@ INSTANTIATE_TEST_SUITE_P(EveryContact, StressWorld, ::testing::ValuesIn(kAllCont
 // 2.4 asserts) and steps them on a ground without a NaN.
 TEST(StressShapes, MakeTriangleRefusesWhatBox2DWouldAssertOnAndBox2DTakesTheRest) {
   using workloads::Precision;
-  using workloads::StressClass;
+  using workloads::InputClass;
   int accepted = 0;
   int refused = 0;
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> exponent(-4, 4);
-  for (StressClass c : workloads::all_stress_classes) {
-    for (const workloads::RawPair& p : workloads::make_stress_pairs(c, Precision::Float, 100, 21)) {
-      const double s = std::pow(10.0, exponent(rng));
+  workloads::Random rng(3);
+  for (InputClass c : workloads::stress_classes) {
+    for (const workloads::RawPair& p : workloads::make_pairs(c, 100, 21, Precision::Float)) {
+      const double s = rng.log_uniform(-4, 4);
       b2Vec2 v[3];
       for (int i = 0; i < 3; ++i) {
         v[i].Set(float(s * (p.a[i].x() - p.a[0].x())), float(s * (p.a[i].y() - p.a[0].y())));

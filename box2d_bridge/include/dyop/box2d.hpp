@@ -234,6 +234,7 @@ enum class ShapeError : std::uint8_t {
   Triangle,          ///< rejected by `Triangle<float>::make`: see `TriangleShape::triangle_error`
   VerticesTooClose,  ///< two vertices closer than 0.5·b2_linearSlop: Box2D would weld them
   AreaTooSmall,      ///< area below `min_triangle_area`: Box2D's centroid would assert
+  TooLarge,          ///< a coordinate beyond `max_triangle_coordinate`: Box2D's inertia overflows
 };
 
 /// A static, human-readable description of `e`, naming the problem.
@@ -244,6 +245,12 @@ const char* describe(ShapeError e);
 /// reordered vertices, so twice the threshold keeps us clear of its rounding, and a triangle that
 /// small (1 cm long, 48 µm high) has mass and inertia without useful digits anyway.
 inline constexpr float min_triangle_area = 2 * b2_epsilon;
+
+/// Largest body-frame coordinate magnitude `make_triangle` accepts (m). Why: Box2D computes a
+/// polygon's inertia in float as density × size⁴ (plus mass × distance² to the body origin);
+/// FLT_MAX is 3.4e38, so up to 1e9 m it stays finite for densities up to 100 kg/m², and beyond
+/// ~5e9 m it is infinite even at density 1.
+inline constexpr float max_triangle_coordinate = 1e9f;
 
 /// The outcome of `make_triangle`: `shape` is meaningful only when `error == None`.
 struct TriangleShape {
