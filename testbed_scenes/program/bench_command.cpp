@@ -1,13 +1,13 @@
 // `dyop bench`: run time against error, printed, and optionally written as JSON and a report;
 // with Box2D, also the rain scene's scaling with the number of triangles.
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "program/commands.hpp"
 #include "report/bench_report.hpp"
+#include "report/output.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "report/rain_scaling_report.hpp"
 #include "report/stream_report.hpp"
@@ -41,19 +41,17 @@ int run(const BenchArgs& args) {
   const std::vector<report::BenchRecord> records = report::run_bench(options, std::cerr);
   report::write_table(records, tables);
   std::string sections;  // the report's scaling and streams sections
-  std::vector<std::string> problems;
-  if (!args.out.empty()) {  // report::write_outputs says so if it is not writable
-    std::error_code ec;
-    std::filesystem::create_directories(args.out, ec);
-  }
+  // Created before the sections write into it; when it cannot be, its first problem says so.
+  std::optional<report::ReportDirectory> dir;
+  if (!args.out.empty()) dir.emplace(args.out);
 #ifdef DYOP_WITH_BOX2D
   if (!args.no_scaling) {
     scenes::ScalingOptions scaling;
     scaling.steps = args.quick ? kQuickScalingSteps : kScalingSteps;
     const std::vector<scenes::ScalingRecord> rain = scenes::run_rain_scaling(scaling, std::cerr);
     tables << '\n';
-    scenes::write_scaling_table(rain, tables);
-    if (!args.out.empty()) sections = scenes::write_scaling_outputs(rain, args.out, problems);
+    report::write_scaling_table(rain, tables);
+    if (dir && dir->created()) sections = report::write_scaling_outputs(rain, *dir);
   }
   if (!args.no_streams) {
     scenes::StreamOptions streams;
@@ -64,29 +62,22 @@ int run(const BenchArgs& args) {
     const std::vector<scenes::StreamResult> results = scenes::run_streams(streams, std::cerr);
     tables << '\n';
     report::write_stream_table(results, tables);
-    if (!args.out.empty()) sections += report::write_stream_outputs(results, args.out, problems);
+    if (dir && dir->created()) sections += report::write_stream_outputs(results, *dir);
   }
 #endif
   if (!args.json.empty()) {
-    if (args.json == "-") {
-      report::write_json(records, std::cout);
-    } else {
-      std::ofstream file(args.json);
-      report::write_json(records, file);
-      if (!file) {
-        std::cerr << "dyop bench: cannot write '" << args.json << "'\n";
-        return exit_io_error;
-      }
+    const std::optional<report::Problem> problem = report::write_output(
+        args.json, std::cout, [&](std::ostream& o) { report::write_json(records, o); });
+    if (problem) {
+      std::cerr << "dyop bench: " << problem->message << '\n';
+      return exit_code_for({*problem});
     }
   }
-  if (!args.out.empty()) {
-    const std::vector<std::string> more = report::write_outputs(records, args.out, sections);
-    problems.insert(problems.begin(), more.begin(), more.end());
-    for (const std::string& p : problems) std::cerr << "dyop bench: " << p << '\n';
+  if (dir) {
+    report::write_outputs(records, *dir, sections);
+    for (const report::Problem& p : dir->problems()) std::cerr << "dyop bench: " << p.message << '\n';
     std::cerr << "dyop bench: report in " << args.out << "/report.md\n";
-    for (const std::string& p : problems) {
-      if (p.rfind("cannot", 0) == 0) return exit_io_error;
-    }
+    return exit_code_for(dir->problems());
   }
   return exit_success;
 }

@@ -2,7 +2,6 @@
 // its registration.
 #include "program/compare_command.hpp"
 
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -11,24 +10,24 @@
 
 #include "program/commands.hpp"
 #include "report/compare_report.hpp"
+#include "report/compare_tables.hpp"
 #include "report/format.hpp"
+#include "report/report_directory.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
 
 // The command is about scenes throughout; their names read better unqualified.
 using namespace dyop::scenes;
-using scenes::detail::fmt;
+using namespace dyop::report;
 
 int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err) {
-  // Fail before the long run if the report cannot be written.
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  const std::string probe = options.out_dir + "/report.md";
-  if (ec || !std::ofstream(probe, std::ios::app)) {
-    err << "dyop compare: cannot write to '" << options.out_dir << "'"
-        << (ec ? ": " + ec.message() : std::string()) << '\n';
-    return exit_io_error;
+  // Fail before the long run if the report cannot be written (appending leaves a report there).
+  const ReportDirectory dir(options.out_dir);
+  if (!dir.created() || !std::ofstream(dir.path("report.md"), std::ios::app)) {
+    const Problem p = dir.created() ? not_written(dir.path("report.md")) : dir.problems().front();
+    err << "dyop compare: " << p.message << '\n';
+    return exit_code_for({p});
   }
   CompareRun run;
   try {
@@ -50,14 +49,15 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     out << "\nThe paper's experiment (scene `paper`):\n\n";
     write_paper_tables(*run.paper, out);
   }
-  const ReportOutcome report = write_report(run);
-  for (const std::string& w : report.warnings) err << "dyop compare: warning: " << w << '\n';
-  for (const std::string& e : report.errors) err << "dyop compare: " << e << '\n';
+  const std::vector<Problem> problems = write_report(run);
+  for (const Problem& p : problems) {
+    err << "dyop compare: " << (p.kind == ProblemKind::ChartNotDrawn ? "warning: " : "")
+        << p.message << '\n';
+  }
   out << "\nreport: " << options.out_dir << "/report.md (run took " << fmt("%.1f", run.seconds)
       << " s)\n";
-  return report.errors.empty() ? exit_success : exit_io_error;
+  return exit_code_for(problems);
 }
-
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<scenes::CompareOptions>();

@@ -1,14 +1,16 @@
 #include "program/pairs_command.hpp"
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "program/commands.hpp"
 #include "program/pair_csv.hpp"
+#include "report/format.hpp"
+#include "report/output.hpp"
 
 namespace dyop::cli {
 namespace {
@@ -30,17 +32,14 @@ void write_table_line(std::ostream& out, const std::string& method, const std::s
   }
   auto shorten = [](const std::string& s) {  // 9 digits are plenty for reading
     if (s.empty() || s.find_first_of("0123456789") == std::string::npos) return s;
-    char buffer[32];
     // strtod, not stod: stod throws on a subnormal (ERANGE), which is a valid answer here.
-    std::snprintf(buffer, sizeof buffer, "%.9g", std::strtod(s.c_str(), nullptr));
-    return std::string(buffer);
+    return report::fmt("%.9g", std::strtod(s.c_str(), nullptr));
   };
-  char line[256];
-  std::snprintf(line, sizeof line, "%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  ",
-                cells[0].c_str(), method.c_str(), cells[1].c_str(), cells[2].c_str(),
-                shorten(cells[3]).c_str(), shorten(cells[4]).c_str(), shorten(cells[5]).c_str(),
-                shorten(cells[6]).c_str());
-  out << line << cells[7] << '\n';
+  out << report::table_line("%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  ", cells[0].c_str(),
+                            method.c_str(), cells[1].c_str(), cells[2].c_str(),
+                            shorten(cells[3]).c_str(), shorten(cells[4]).c_str(),
+                            shorten(cells[5]).c_str(), shorten(cells[6]).c_str())
+      << cells[7] << '\n';
 }
 
 }  // namespace
@@ -49,11 +48,9 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
   PairsSummary summary;
   const bool several = options.backends.size() > 1;
   if (options.table) {
-    char header[256];
-    std::snprintf(header, sizeof header, "%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  %s",
-                  "row", "method", "status", "overlap", "depth", "separation", "nx", "ny",
-                  "message");
-    out << header << '\n';
+    out << report::table_line("%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  %s\n", "row",
+                              "method", "status", "overlap", "depth", "separation", "nx", "ny",
+                              "message");
   } else {
     out << (several ? "method," : "") << pair_csv_header() << '\n';
   }
@@ -123,19 +120,15 @@ int run(const PairsArgs& args) {
       return exit_io_error;
     }
   }
-  std::ofstream out_file;
-  if (!args.output.empty() && args.output != "-") {
-    out_file.open(args.output);
-    if (!out_file) {
-      std::cerr << "dyop pairs: cannot open output file '" << args.output << "'\n";
-      return exit_io_error;
-    }
+  report::Output output(args.output.empty() ? "-" : args.output, std::cout);
+  if (const std::optional<report::Problem> p = output.open_problem()) {
+    std::cerr << "dyop pairs: " << p->message << '\n';
+    return exit_code_for({*p});
   }
   std::istream& in = in_file.is_open() ? static_cast<std::istream&>(in_file) : std::cin;
-  std::ostream& out = out_file.is_open() ? static_cast<std::ostream&>(out_file) : std::cout;
-  const PairsSummary s = run_pairs(options, in, out);
-  out.flush();
-  if (in.bad() || !out) {
+  const PairsSummary s = run_pairs(options, in, output.stream());
+  const std::optional<report::Problem> written = output.close();
+  if (in.bad() || written) {
     std::cerr << "dyop pairs: input/output error\n";
     return exit_io_error;
   }

@@ -2,15 +2,15 @@
 // registration.
 #include "program/scene_command.hpp"
 
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "program/commands.hpp"
+#include "report/output.hpp"
 #include "scenes/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
@@ -75,13 +75,15 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     err << "dyop scene: --steps must be at least 1\n";
     return exit_usage_error;
   }
-  std::ofstream json_file, svg_file;
-  for (auto [path, file] : {std::pair{&c.json, &json_file}, std::pair{&c.svg, &svg_file}}) {
-    if (path->empty() || *path == "-") continue;
-    file->open(*path);
-    if (!*file) {
-      err << "dyop scene: cannot write '" << *path << "'\n";
-      return exit_io_error;
+  // Opened before the scene runs, so that an unwritable path fails at once.
+  std::optional<report::Output> json, svg;
+  if (!c.json.empty()) json.emplace(c.json, out);
+  if (!c.svg.empty()) svg.emplace(c.svg, out);
+  for (const std::optional<report::Output>* o : {&json, &svg}) {
+    if (!*o) continue;
+    if (const std::optional<report::Problem> p = (*o)->open_problem()) {
+      err << "dyop scene: " << p->message << '\n';
+      return exit_code_for({*p});
     }
   }
   std::ostream& summary = c.json == "-" || c.svg == "-" ? err : out;
@@ -98,19 +100,16 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     return exit_io_error;
   }
   write_summary(m, summary);
-  if (!c.json.empty()) write_json(m, c.json == "-" ? out : json_file);
-  if (!c.svg.empty()) write_svg(final_state, c.svg == "-" ? out : svg_file);
-  bool written = static_cast<bool>(out);
-  for (std::ofstream* f : {&json_file, &svg_file}) {
-    if (!f->is_open()) continue;
-    f->close();
-    written = written && !f->fail();
+  if (json) write_json(m, json->stream());
+  if (svg) write_svg(final_state, svg->stream());
+  std::vector<report::Problem> problems;
+  for (std::optional<report::Output>* o : {&json, &svg}) {
+    if (!*o) continue;
+    if (std::optional<report::Problem> p = (*o)->close()) problems.push_back(std::move(*p));
   }
-  if (!written) {
-    err << "dyop scene: output error\n";
-    return exit_io_error;
-  }
-  return exit_success;
+  if (!out) problems.push_back(report::not_written("-", "standard output failed"));
+  for (const report::Problem& p : problems) err << "dyop scene: " << p.message << '\n';
+  return exit_code_for(problems);
 }
 
 void add_scene_command(CLI::App& app, int& exit_code) {

@@ -1,10 +1,12 @@
 // `dyop stress`: numerical stability on hostile input, per runner, category and precision.
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "program/commands.hpp"
+#include "report/output.hpp"
 #include "report/stress_report.hpp"
 
 namespace dyop::cli {
@@ -19,19 +21,6 @@ struct StressArgs {
   bool check = false;
 };
 
-// Writes with `write` to `path`, or to standard output for "-". False when the file failed.
-template <class Write>
-bool write_to(const std::string& path, Write&& write) {
-  if (path == "-") {
-    write(std::cout);
-    return true;
-  }
-  std::ofstream file(path);
-  write(file);
-  if (!file) std::cerr << "dyop stress: cannot write '" << path << "'\n";
-  return static_cast<bool>(file);
-}
-
 int run(const StressArgs& args) {
   if (args.json == "-" && args.markdown == "-") {
     std::cerr << "dyop stress: --json and --markdown cannot both write to standard output\n";
@@ -45,19 +34,22 @@ int run(const StressArgs& args) {
   const std::vector<report::StressRecord> records = report::run_stress(options, std::cerr);
   // Standard output carries one thing: the table, or what was asked for on "-".
   if (args.json != "-" && args.markdown != "-") report::write_table(records, std::cout);
-  bool written = true;
-  if (!args.json.empty()) {
-    written &= write_to(args.json, [&](std::ostream& o) { report::write_json(records, o); });
-  }
-  if (!args.markdown.empty()) {
-    written &= write_to(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
-  }
+  std::vector<report::Problem> problems;
+  auto write = [&](const std::string& path, auto&& body) {
+    if (path.empty()) return;
+    if (std::optional<report::Problem> p = report::write_output(path, std::cout, body)) {
+      std::cerr << "dyop stress: " << p->message << '\n';
+      problems.push_back(*p);
+    }
+  };
+  write(args.json, [&](std::ostream& o) { report::write_json(records, o); });
+  write(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
   const std::vector<std::string> broken = report::broken_promises(records);
   for (const std::string& b : broken) std::cerr << "dyop stress: broken promise: " << b << '\n';
   std::cerr << "dyop stress: " << records.size() << " records, "
             << (broken.empty() ? "every promise held" : std::to_string(broken.size()) + " broken promises")
             << '\n';
-  if (!written) return exit_io_error;
+  if (!problems.empty()) return exit_code_for(problems);
   return args.check && !broken.empty() ? exit_check_failed : exit_success;
 }
 

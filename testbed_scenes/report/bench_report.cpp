@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
-#include <sstream>
 
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "measure/bench_runners.hpp"
+#include "report/format.hpp"
 #include "report/gnuplot.hpp"
+#include "report/json.hpp"
 
 namespace dyop::report {
 namespace {
@@ -119,12 +117,6 @@ void run_precision(const BenchOptions& options, workloads::InputClass c,
   }
 }
 
-std::string fmt(const char* f, double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, f, x);
-  return buffer;
-}
-
 // Points not dominated in both time and error: the methods worth choosing.
 std::vector<const BenchRecord*> pareto_front(std::vector<const BenchRecord*> points) {
   std::sort(points.begin(), points.end(), [](const BenchRecord* x, const BenchRecord* y) {
@@ -158,18 +150,14 @@ std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& pr
 }
 
 void write_table(const std::vector<BenchRecord>& records, std::ostream& out) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%-15s %-13s %-8s %-6s %9s %8s %10s %10s %10s %7s %6s %5s\n",
-                "method", "class", "level", "prec", "ns/pair", "xbox2d", "err_max", "err_p99",
-                "err_mean", "exact%", "miscl", "inval");
-  out << line;
+  out << table_line("%-15s %-13s %-8s %-6s %9s %8s %10s %10s %10s %7s %6s %5s\n", "method",
+                    "class", "level", "prec", "ns/pair", "xbox2d", "err_max", "err_p99",
+                    "err_mean", "exact%", "miscl", "inval");
   for (const BenchRecord& r : records) {
-    std::snprintf(line, sizeof line,
-                  "%-15s %-13s %-8s %-6s %9.1f %8.3f %10.2e %10.2e %10.2e %7.1f %6d %5d\n",
-                  r.method.c_str(), r.cls.c_str(), r.level.c_str(), r.precision.c_str(),
-                  r.ns_per_pair, r.ratio_vs_box2d, r.err_max, r.err_p99, r.err_mean,
-                  100 * r.exact_fraction, r.misclassified, r.invalid);
-    out << line;
+    out << table_line("%-15s %-13s %-8s %-6s %9.1f %8.3f %10.2e %10.2e %10.2e %7.1f %6d %5d\n",
+                      r.method.c_str(), r.cls.c_str(), r.level.c_str(), r.precision.c_str(),
+                      r.ns_per_pair, r.ratio_vs_box2d, r.err_max, r.err_p99, r.err_mean,
+                      100 * r.exact_fraction, r.misclassified, r.invalid);
   }
 }
 
@@ -187,38 +175,32 @@ void write_csv(const std::vector<BenchRecord>& records, std::ostream& out) {
 }
 
 void write_json(const std::vector<BenchRecord>& records, std::ostream& out) {
-  // Every number written here is finite: times, ratios and errors of finite answers.
-  out << "[\n";
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    const BenchRecord& r = records[i];
-    out << "  {\"method\": \"" << r.method << "\", \"class\": \"" << r.cls << "\", \"level\": \""
-        << r.level << "\", \"precision\": \"" << r.precision << "\", \"pairs\": " << r.pairs
-        << ", \"ns_per_pair\": " << fmt("%.6g", r.ns_per_pair)
-        << ", \"ratio_vs_box2d\": " << fmt("%.6g", r.ratio_vs_box2d)
-        << ", \"err_max\": " << fmt("%.6g", r.err_max) << ", \"err_mean\": "
-        << fmt("%.6g", r.err_mean) << ", \"err_p99\": " << fmt("%.6g", r.err_p99)
-        << ", \"exact_fraction\": " << fmt("%.6g", r.exact_fraction)
-        << ", \"normal_err_max\": " << fmt("%.6g", r.normal_err_max)
-        << ", \"normal_err_mean\": " << fmt("%.6g", r.normal_err_mean)
-        << ", \"misclassified\": " << r.misclassified << ", \"invalid\": " << r.invalid << "}"
-        << (i + 1 < records.size() ? ",\n" : "\n");
+  Json list = Json::array();
+  for (const BenchRecord& r : records) {
+    list.push_back({{"method", r.method},
+                    {"class", r.cls},
+                    {"level", r.level},
+                    {"precision", r.precision},
+                    {"pairs", r.pairs},
+                    {"ns_per_pair", json_number(r.ns_per_pair)},
+                    {"ratio_vs_box2d", json_number(r.ratio_vs_box2d)},
+                    {"err_max", json_number(r.err_max)},
+                    {"err_mean", json_number(r.err_mean)},
+                    {"err_p99", json_number(r.err_p99)},
+                    {"exact_fraction", json_number(r.exact_fraction)},
+                    {"normal_err_max", json_number(r.normal_err_max)},
+                    {"normal_err_mean", json_number(r.normal_err_mean)},
+                    {"misclassified", r.misclassified},
+                    {"invalid", r.invalid}});
   }
-  out << "]\n";
+  write_json_document(list, out);
 }
 
-std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
-                                       const std::string& dir, const std::string& sections) {
-  std::vector<std::string> problems;
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return {"cannot create " + dir + ": " + ec.message()};
-  auto open = [&](const std::string& file, auto&& write) {
-    std::ofstream out(dir + "/" + file);
-    write(out);
-    if (!out) problems.push_back("cannot write " + dir + "/" + file);
-  };
-  open("bench.csv", [&](std::ostream& o) { write_csv(records, o); });
-  open("bench.json", [&](std::ostream& o) { write_json(records, o); });
+void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir,
+                   const std::string& sections) {
+  if (!dir.created()) return;
+  dir.write("bench.csv", [&](std::ostream& o) { write_csv(records, o); });
+  dir.write("bench.json", [&](std::ostream& o) { write_json(records, o); });
 
   // The chart: each method at the Depth level (Box2D: its only level) on the overlapping class,
   // float; errors at or below 1e-17 are drawn at 1e-17 ("exact": a log axis has no zero).
@@ -229,31 +211,29 @@ std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
       points.push_back(&r);
     }
   }
-  open("time_vs_error.dat", [&](std::ostream& o) {
+  auto write_points = [](std::ostream& o, const std::vector<const BenchRecord*>& which) {
+    for (const BenchRecord* p : which) {
+      write_data_line(o, p->method, {p->ns_per_pair, std::max(p->err_max, 1e-17)});
+    }
+  };
+  dir.write("time_vs_error.dat", [&](std::ostream& o) {
     o << "# method ns_per_pair err_max(floored at 1e-17)\n";
-    for (const BenchRecord* p : points) {
-      o << p->method << ' ' << p->ns_per_pair << ' ' << std::max(p->err_max, 1e-17) << '\n';
-    }
+    write_points(o, points);
   });
-  open("pareto.dat", [&](std::ostream& o) {
-    for (const BenchRecord* p : pareto_front(points)) {
-      o << p->method << ' ' << p->ns_per_pair << ' ' << std::max(p->err_max, 1e-17) << '\n';
-    }
-  });
-  const std::string script =
-      "set terminal svg size 900,600 dynamic background rgb 'white'\n"
-      "set output '" + dir + "/time_vs_error.svg'\n"
-      "set title 'Run time against error: overlapping pairs, float, Depth level (box2d: full "
-      "manifold)'\n"
-      "set logscale xy\nset format y '10^{%L}'\nset xlabel 'ns per pair (median)'\n"
-      "set ylabel 'max |depth error| / pair size (1e-17 = exact)'\nset grid\nset key top right\n"
-      "plot '" + dir + "/time_vs_error.dat' using 2:3 with points pt 7 ps 1.2 title 'methods', \\\n"
-      "     '' using 2:3:1 with labels offset 1,1 left notitle, \\\n"
-      "     '" + dir + "/pareto.dat' using 2:3 with steps lw 2 title 'Pareto front'\n";
-  const ChartResult chart = run_gnuplot(script, dir + "/time_vs_error.gp");
-  if (!chart.ok) problems.push_back(chart.message);
+  dir.write("pareto.dat", [&](std::ostream& o) { write_points(o, pareto_front(points)); });
+  dir.chart("time_vs_error", "svg size 900,600 dynamic background rgb 'white'",
+            "set title 'Run time against error: overlapping pairs, float, Depth level (box2d: "
+            "full manifold)'\n"
+            "set logscale xy\nset format y '10^{%L}'\nset xlabel 'ns per pair (median)'\n"
+            "set ylabel 'max |depth error| / pair size (1e-17 = exact)'\nset grid\n"
+            "set key top right\n"
+            "plot " + dir.quoted("time_vs_error.dat") +
+                " using 2:3 with points pt 7 ps 1.2 title 'methods', \\\n"
+                "     '' using 2:3:1 with labels offset 1,1 left notitle, \\\n"
+                "     " + dir.quoted("pareto.dat") +
+                " using 2:3 with steps lw 2 title 'Pareto front'\n");
 
-  open("report.md", [&](std::ostream& o) {
+  dir.write("report.md", [&](std::ostream& o) {
     o << "# dyop bench\n\nRun time against error per method, input class, query level and "
          "precision. Times are medians over timed passes of 8192 distinct pairs; `xbox2d` is the "
          "ratio to Box2D's `b2CollidePolygons` (full manifold, float) on the same class in the "
@@ -270,7 +250,6 @@ std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
     }
     if (!sections.empty()) o << '\n' << sections;
   });
-  return problems;
 }
 
 }  // namespace dyop::report

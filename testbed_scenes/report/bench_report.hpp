@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "report/report_directory.hpp"
+
 namespace dyop::report {
 
 struct BenchOptions {
@@ -44,17 +46,17 @@ std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& pr
 /// The aligned table printed by `dyop bench`.
 void write_table(const std::vector<BenchRecord>& records, std::ostream& out);
 
-/// A JSON list of records (every field of `BenchRecord`).
+/// A JSON list of records (every field of `BenchRecord`; a non-finite figure is null).
 void write_json(const std::vector<BenchRecord>& records, std::ostream& out);
 
 /// The CSV behind the report (header and one line per record).
 void write_csv(const std::vector<BenchRecord>& records, std::ostream& out);
 
-/// `dir/report.md`, `dir/bench.csv`, `dir/bench.json` and the chart `dir/time_vs_error.svg`
-/// (gnuplot; log–log, one point per method at the Depth level, Pareto front drawn); `sections`
-/// (Markdown, e.g. the scaling section) is appended to the report. Returns messages about
-/// anything not written (an empty list when all went well).
-std::vector<std::string> write_outputs(const std::vector<BenchRecord>& records,
-                                       const std::string& dir, const std::string& sections = {});
+/// `report.md`, `bench.csv`, `bench.json` and the chart `time_vs_error.svg` in `dir` (gnuplot;
+/// log–log, one point per method at the Depth level, Pareto front drawn); `sections` (Markdown,
+/// e.g. the scaling section) is appended to the report. What was not written is in
+/// `dir.problems()`.
+void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir,
+                   const std::string& sections = {});
 
 }  // namespace dyop::report

@@ -1,69 +1,60 @@
 // `dyop compare`'s charts: gnuplot scripts and their data files, drawn as SVG.
 #include <algorithm>
+#include <limits>
 #include <sstream>
-#include <utility>
 
 #include "report/compare_report_files.hpp"
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 
-namespace dyop::scenes::detail {
+namespace dyop::report::detail {
 namespace {
 
-// A path inside a gnuplot single-quoted string ('' stands for one quote).
-std::string gp_quote(const std::string& path) {
-  std::string out = "'";
-  for (char c : path) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
+using namespace dyop::scenes;
 
 // The errors below this are drawn at this value on the log axis (exact methods have zeros).
 constexpr double kErrorFloor = 1e-9;
+// A missing figure in a chart's data file (gnuplot's missing value).
+constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
+
+const char* const kTerminal = "svg size 1000,520 dynamic font 'sans,11' background '#ffffff'";
 
 class Charts {
  public:
-  explicit Charts(ReportFiles& files) : files_(files), run_(files.run) {}
+  explicit Charts(ReportFiles& files) : files_(files), dir_(files.dir), run_(files.run) {}
 
-  void chart(const std::string& name, const std::string& script) {
-    const report::ChartResult r = report::run_gnuplot(script, path(name + ".gp"));
-    if (r.ok) {
-      files_.charts.push_back(name + ".svg");
-    } else {
-      files_.outcome.warnings.push_back(name + ".svg: " + r.message);
-    }
+  void chart(const std::string& name, const std::string& terminal, const std::string& body) {
+    if (dir_.chart(name, terminal, body)) files_.charts.push_back(name + ".svg");
   }
 
   void charts() {
-    const std::string terminal =
-        "set terminal svg size 1000,520 dynamic font 'sans,11' background '#ffffff'\n";
     // Time per method: clustered bars, scenes along x, one bar per backend.
-    write_file("time_per_method.dat", [&](std::ostream& o) {
+    dir_.write("time_per_method.dat", [&](std::ostream& o) {
       o << "scene";
       for (box2d::Backend b : box2d::all_backends) o << ' ' << box2d::name(b);
       o << '\n';
       for (const std::string& s : scene_names(run_)) {
-        o << s;
+        std::vector<double> times;
         for (box2d::Backend b : box2d::all_backends) {
           const SceneMetrics* m = row(run_, s, box2d::name(b));
-          o << ' ' << (m ? fmt("%.6g", m->narrowphase_ns_per_pair) : "NaN");
+          times.push_back(m ? m->narrowphase_ns_per_pair : kMissing);
         }
-        o << '\n';
+        write_data_line(o, s, times);
       }
     });
     std::ostringstream bars;
-    bars << terminal << "set output " << gp_quote(path("time_per_method.svg")) << "\n"
-         << "set title 'Narrow-phase time per contact update (Box2D scenes: "
+    bars << "set title 'Narrow-phase time per contact update (Box2D scenes: "
             "b2ContactManager::Collide; paper: the method alone)'\n"
          << "set style data histograms\nset style histogram clustered gap 1\n"
          << "set style fill solid 0.85 border -1\nset logscale y\nset grid ytics\n"
          << "set ylabel 'ns per pair (log scale)'\nset xtics rotate by -25\n"
          << "set key outside right top\nset yrange [1:*]\n"
          << "plot for [i=2:" << box2d::backend_count + 1 << "] "
-         << gp_quote(path("time_per_method.dat")) << " using i:xtic(1) title columnheader(i)\n";
-    chart("time_per_method", bars.str());
+         << dir_.quoted("time_per_method.dat") << " using i:xtic(1) title columnheader(i)\n";
+    chart("time_per_method", kTerminal, bars.str());
 
     // Time against error: one point per scene and backend, one colour per backend.
-    write_file("time_vs_error.dat", [&](std::ostream& o) {
+    dir_.write("time_vs_error.dat", [&](std::ostream& o) {
       for (box2d::Backend b : box2d::all_backends) {
         o << "# " << box2d::name(b) << ": ns_per_pair pd_error_max scene\n";
         for (const SceneMetrics& m : run_.rows) {
@@ -75,36 +66,34 @@ class Charts {
       }
     });
     std::ostringstream scatter;
-    scatter << terminal << "set output " << gp_quote(path("time_vs_error.svg")) << "\n"
-            << "set title 'Narrow-phase time against largest depth error vs exact, per scene "
+    scatter << "set title 'Narrow-phase time against largest depth error vs exact, per scene "
                "(errors below "
             << fmt("%g", kErrorFloor) << " m drawn at " << fmt("%g", kErrorFloor) << ")'\n"
             << "set logscale xy\nset grid\nset xlabel 'ns per pair'\n"
             << "set ylabel 'largest |depth - exact depth| (m)'\nset key outside right top\n"
             << "plot ";
     for (int i = 0; i < box2d::backend_count; ++i) {
-      scatter << (i ? ", " : "") << gp_quote(path("time_vs_error.dat")) << " index " << i
+      scatter << (i ? ", " : "") << dir_.quoted("time_vs_error.dat") << " index " << i
               << " using 1:2 with points pt " << 5 + 2 * (i % 3) << " ps 1.3 title '"
               << box2d::name(box2d::all_backends[i]) << "'";
     }
     scatter << '\n';
-    chart("time_vs_error", scatter.str());
+    chart("time_vs_error", kTerminal, scatter.str());
 
     if (!run_.in_world.empty()) in_world_chart();
     if (!run_.paper) return;
-    write_file("paper_figure7.dat", [&](std::ostream& o) { write_figure7_data(run_, o, ' '); });
+    dir_.write("paper_figure7.dat", [&](std::ostream& o) { write_figure7_data(run_, o, ' '); });
     std::ostringstream fig;
-    fig << terminal << "set output " << gp_quote(path("paper_figure7.svg")) << "\n"
-        << "set title 'The paper''s Figure 7 rebuilt: time to find the penetration depths of "
+    fig << "set title 'The paper''s Figure 7 rebuilt: time to find the penetration depths of "
            "each triangle type over "
         << run_.paper->steps << " steps'\n"
         << "set xlabel 'triangle type'\nset ylabel 'µs for all steps (median of "
         << run_.paper->repetitions << " runs)'\nset xtics 1\nset xrange [0.5:10.5]\n"
         << "set yrange [0:*]\nset grid ytics\nset key outside right top\n"
         << "plot for [i=4:" << 3 + run_.paper->methods.size() << "] "
-        << gp_quote(path("paper_figure7.dat"))
+        << dir_.quoted("paper_figure7.dat")
         << " using 1:i with linespoints lw 2 pt 7 title columnheader(i)\n";
-    chart("paper_figure7", fig.str());
+    chart("paper_figure7", kTerminal, fig.str());
   }
 
   // Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
@@ -119,28 +108,26 @@ class Charts {
     auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
       for (const InWorldRatio& r : run_.in_world) {
         if (r.scene == scene && r.backend == backend) {
-          return fmt("%.6g", step ? r.step_ratio() : r.narrowphase_ratio());
+          return step ? r.step_ratio() : r.narrowphase_ratio();
         }
       }
-      return std::string("NaN");
+      return kMissing;
     };
     for (const bool step : {false, true}) {
-      write_file(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
+      dir_.write(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
         o << "scene";
         for (const std::string& b : backends) o << ' ' << b;
         o << '\n';
         for (const std::string& s : scene_names(run_)) {
           if (s == "paper") continue;
-          o << s;
-          for (const std::string& b : backends) o << ' ' << ratio(s, b, step);
-          o << '\n';
+          std::vector<double> ratios;
+          for (const std::string& b : backends) ratios.push_back(ratio(s, b, step));
+          write_data_line(o, s, ratios);
         }
       });
     }
     std::ostringstream bars;
-    bars << "set terminal svg size 1000,760 dynamic font 'sans,11' background '#ffffff'\n"
-         << "set output " << gp_quote(path("inworld.svg")) << "\n"
-         << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
+    bars << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
             "Box2D''s own contact (below 1: the plug-in is faster)'\n"
          << "set style data histograms\nset style histogram clustered gap 1\n"
          << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
@@ -150,21 +137,16 @@ class Charts {
       bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
            << "'\nset ylabel '× " << box2d_own << "'\n"
            << "plot for [i=2:" << backends.size() + 1 << "] "
-           << gp_quote(path(step ? "inworld_step.dat" : "inworld_collide.dat"))
+           << dir_.quoted(step ? "inworld_step.dat" : "inworld_collide.dat")
            << " using i:xtic(1) title columnheader(i)\n";
     }
     bars << "unset multiplot\n";
-    chart("inworld", bars.str());
+    chart("inworld", "svg size 1000,760 dynamic font 'sans,11' background '#ffffff'", bars.str());
   }
 
  private:
-  std::string path(const std::string& file) const { return files_.path(file); }
-  template <class F>
-  bool write_file(const std::string& file, F&& body) {
-    return files_.write_file(file, std::forward<F>(body));
-  }
-
   ReportFiles& files_;
+  ReportDirectory& dir_;
   const CompareRun& run_;
 };
 
@@ -172,4 +154,4 @@ class Charts {
 
 void draw_charts(ReportFiles& files) { Charts(files).charts(); }
 
-}  // namespace dyop::scenes::detail
+}  // namespace dyop::report::detail

@@ -1,12 +1,33 @@
-// `dyop compare`'s CSV files: the main table, the skip runs, and the paper experiment's.
+// `dyop compare`'s CSV files: the main table, the skip runs, the in-world runs, and the paper
+// experiment's.
 #include <algorithm>
 #include <optional>
 
 #include "report/compare_report_files.hpp"
+#include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "scenes/metrics_io.hpp"
+#include "scenes/skips.hpp"
 
-namespace dyop::scenes::detail {
+namespace dyop::report {
+
+void write_in_world_csv(const std::vector<scenes::InWorldRatio>& rows, std::ostream& out) {
+  out << "scene,backend,steps,repetitions,narrowphase_ms_own,narrowphase_ms,narrowphase_ratio,"
+         "step_ms_own,step_ms,step_ratio,step_ms_median_own,step_ms_median,contact_updates_own,"
+         "contact_updates\n";
+  for (const scenes::InWorldRatio& r : rows) {
+    out << r.scene << ',' << r.backend << ',' << r.steps << ',' << r.repetitions << ','
+        << fmt("%.6g", r.own.narrowphase_ms) << ',' << fmt("%.6g", r.plugin.narrowphase_ms) << ','
+        << fmt("%.6g", r.narrowphase_ratio()) << ',' << fmt("%.6g", r.own.step_ms) << ','
+        << fmt("%.6g", r.plugin.step_ms) << ',' << fmt("%.6g", r.step_ratio()) << ','
+        << fmt("%.6g", r.own.step_ms_median) << ',' << fmt("%.6g", r.plugin.step_ms_median) << ','
+        << r.own.contact_updates << ',' << r.plugin.contact_updates << '\n';
+  }
+}
+
+namespace detail {
+
+using namespace dyop::scenes;
 
 void write_compare_csv(const CompareRun& run, std::ostream& o) {
   o << csv_header() << ",ratio_to_box2d\n";
@@ -76,4 +97,5 @@ void write_paper_methods_csv(const CompareRun& run, std::ostream& o) {
   }
 }
 
-}  // namespace dyop::scenes::detail
+}  // namespace detail
+}  // namespace dyop::report

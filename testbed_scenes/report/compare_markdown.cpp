@@ -3,12 +3,15 @@
 #include <thread>
 
 #include "report/compare_report_files.hpp"
+#include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "scenes/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes::detail {
+namespace dyop::report::detail {
 namespace {
+
+using namespace dyop::scenes;
 
 class Markdown {
  public:
@@ -165,7 +168,7 @@ class Markdown {
 
     std::vector<std::string> differ, same;
     for (const SkipMeasurement& m : run_.skips) {
-      if (m.on.backend != "lin-canny") continue;
+      if (m.on.backend != name(Method::LinCanny)) continue;
       (m.on.hash == m.off.hash ? same : differ).push_back("`" + m.on.scene + "`");
     }
     if (differ.empty() && same.empty()) return;
@@ -259,7 +262,9 @@ class Markdown {
                         fmt("%.1f", skip_target_ratio));
       }
     }
-    for (const std::string& w : files_.outcome.warnings) lines.push_back(w);
+    for (const Problem& p : files_.dir.problems()) {
+      if (p.kind == ProblemKind::ChartNotDrawn) lines.push_back(p.message);
+    }
     o << "## Problems\n\n";
     if (lines.empty()) o << "None: no NaN, no fallback, every pyramid and stack stands.\n";
     for (const std::string& l : lines) o << "- " << l << '\n';
@@ -275,4 +280,4 @@ class Markdown {
 
 void write_markdown(const ReportFiles& files, std::ostream& o) { Markdown(files).report(o); }
 
-}  // namespace dyop::scenes::detail
+}  // namespace dyop::report::detail

@@ -1,12 +1,11 @@
 // `dyop compare`'s report directory: report.md, the CSVs behind it, the charts and snapshots.
 #include "report/compare_report.hpp"
 
-#include <filesystem>
-
 #include "report/compare_report_files.hpp"
-#include "scenes/scene.hpp"
+#include "report/compare_tables.hpp"
+#include "scenes/svg.hpp"
 
-namespace dyop::scenes {
+namespace dyop::report {
 namespace detail {
 
 std::vector<std::string> scene_names(const CompareRun& run) {
@@ -27,31 +26,29 @@ const SceneMetrics* row(const CompareRun& run, const std::string& scene,
 
 }  // namespace detail
 
-ReportOutcome write_report(const CompareRun& run) {
-  std::error_code ec;
-  std::filesystem::create_directories(run.options.out_dir, ec);
-  if (ec) return {{"cannot create " + run.options.out_dir + ": " + ec.message()}, {}};
-  detail::ReportFiles files{run, run.options.out_dir, {}, {}};
-  files.write_file("compare.csv", [&](std::ostream& o) { detail::write_compare_csv(run, o); });
+std::vector<Problem> write_report(const scenes::CompareRun& run) {
+  detail::ReportFiles files{run, ReportDirectory(run.options.out_dir), {}};
+  ReportDirectory& dir = files.dir;
+  if (!dir.created()) return dir.problems();
+  dir.write("compare.csv", [&](std::ostream& o) { detail::write_compare_csv(run, o); });
   if (!run.skips.empty()) {
-    files.write_file("skips.csv", [&](std::ostream& o) { detail::write_skips_csv(run, o); });
+    dir.write("skips.csv", [&](std::ostream& o) { detail::write_skips_csv(run, o); });
   }
   if (!run.in_world.empty()) {
-    files.write_file("inworld.csv", [&](std::ostream& o) { write_in_world_csv(run.in_world, o); });
+    dir.write("inworld.csv", [&](std::ostream& o) { write_in_world_csv(run.in_world, o); });
   }
   if (run.paper) {
-    files.write_file("paper_figure7.csv",
-                     [&](std::ostream& o) { detail::write_figure7_data(run, o, ','); });
-    files.write_file("paper_methods.csv",
-                     [&](std::ostream& o) { detail::write_paper_methods_csv(run, o); });
+    dir.write("paper_figure7.csv", [&](std::ostream& o) { detail::write_figure7_data(run, o, ','); });
+    dir.write("paper_methods.csv",
+              [&](std::ostream& o) { detail::write_paper_methods_csv(run, o); });
   }
   for (const auto& snapshot : run.snapshots) {  // not a structured binding: C++17 lambdas
-    files.write_file("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
-                     [&](std::ostream& o) { write_svg(snapshot.second, o); });
+    dir.write("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
+              [&](std::ostream& o) { scenes::write_svg(snapshot.second, o); });
   }
   detail::draw_charts(files);
-  files.write_file("report.md", [&](std::ostream& o) { detail::write_markdown(files, o); });
-  return files.outcome;
+  dir.write("report.md", [&](std::ostream& o) { detail::write_markdown(files, o); });
+  return dir.problems();
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::report

@@ -1,31 +1,25 @@
 #include "report/rain_scaling_report.hpp"
 
-#include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 
-namespace dyop::scenes {
+namespace dyop::report {
 
-using detail::fmt;
+using scenes::ScalingRecord;
 
 void write_scaling_table(const std::vector<ScalingRecord>& records, std::ostream& out) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%-10s %7s %9s %10s %10s %10s %10s %8s %8s %8s %10s %5s\n",
-                "backend", "falling", "triangles", "step_ms", "np_ms", "np_ns/pair", "pairs/step",
-                "xbox2d", "np_xown", "step_xown", "pd_err_max", "fallb");
-  out << line;
+  out << table_line("%-10s %7s %9s %10s %10s %10s %10s %8s %8s %8s %10s %5s\n", "backend",
+                    "falling", "triangles", "step_ms", "np_ms", "np_ns/pair", "pairs/step",
+                    "xbox2d", "np_xown", "step_xown", "pd_err_max", "fallb");
   for (const ScalingRecord& r : records) {
-    std::snprintf(line, sizeof line,
-                  "%-10s %7d %9d %10.3f %10.3f %10.1f %10.0f %8.3f %8.3f %8.3f %10.2e %5llu%s\n",
-                  r.backend.c_str(), r.falling, r.triangles, r.step_ms_median,
-                  r.narrowphase_ms_per_step, r.narrowphase_ns_per_pair, r.pairs_per_step,
-                  r.ratio_vs_box2d, r.ratio_vs_own, r.step_ratio_vs_own, r.pd_error_max,
-                  static_cast<unsigned long long>(r.fallbacks),
-                  r.nan_detected ? " NaN" : "");
-    out << line;
+    out << table_line(
+        "%-10s %7d %9d %10.3f %10.3f %10.1f %10.0f %8.3f %8.3f %8.3f %10.2e %5llu%s\n",
+        r.backend.c_str(), r.falling, r.triangles, r.step_ms_median, r.narrowphase_ms_per_step,
+        r.narrowphase_ns_per_pair, r.pairs_per_step, r.ratio_vs_box2d, r.ratio_vs_own,
+        r.step_ratio_vs_own, r.pd_error_max, static_cast<unsigned long long>(r.fallbacks),
+        r.nan_detected ? " NaN" : "");
   }
 }
 
@@ -44,12 +38,8 @@ void write_scaling_csv(const std::vector<ScalingRecord>& records, std::ostream& 
 }
 
 std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
-                                  const std::string& dir, std::vector<std::string>& problems) {
-  {
-    std::ofstream csv(dir + "/scaling.csv");
-    write_scaling_csv(records, csv);
-    if (!csv) problems.push_back("cannot write " + dir + "/scaling.csv");
-  }
+                                  ReportDirectory& dir) {
+  dir.write("scaling.csv", [&](std::ostream& o) { write_scaling_csv(records, o); });
   // One data block per backend (gnuplot's `index`), in the order of the records.
   std::vector<std::string> backends;
   for (const ScalingRecord& r : records) {
@@ -57,23 +47,20 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
     for (const std::string& b : backends) seen = seen || b == r.backend;
     if (!seen) backends.push_back(r.backend);
   }
-  {
-    std::ofstream dat(dir + "/rain_scaling.dat");
+  dir.write("rain_scaling.dat", [&](std::ostream& o) {
     for (const std::string& b : backends) {
-      dat << "# " << b << ": falling step_ms_median narrowphase_ms_per_step\n";
+      o << "# " << b << ": falling step_ms_median narrowphase_ms_per_step\n";
       for (const ScalingRecord& r : records) {
         if (r.backend == b) {
-          dat << r.falling << ' ' << r.step_ms_median << ' ' << r.narrowphase_ms_per_step << '\n';
+          write_data_line(o, std::to_string(r.falling),
+                          {r.step_ms_median, r.narrowphase_ms_per_step});
         }
       }
-      dat << "\n\n";
+      o << "\n\n";
     }
-    if (!dat) problems.push_back("cannot write " + dir + "/rain_scaling.dat");
-  }
+  });
   std::ostringstream script;
-  script << "set terminal svg size 1100,500 dynamic background rgb 'white'\n"
-            "set output '" << dir << "/rain_scaling.svg'\n"
-            "set multiplot layout 1,2 title 'rain: time per step against falling triangles'\n"
+  script << "set multiplot layout 1,2 title 'rain: time per step against falling triangles'\n"
             "set logscale xy\nset grid\nset key top left\nset xlabel 'falling triangles'\n"
             "set xtics (100, 300, 1000, 3000)\n";
   const char* panels[2][2] = {{"3", "narrow phase (Box2D collide) ms per step"},
@@ -81,14 +68,13 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
   for (const auto& panel : panels) {
     script << "set ylabel '" << panel[1] << "'\nplot ";
     for (std::size_t i = 0; i < backends.size(); ++i) {
-      script << (i ? ", \\\n     " : "") << "'" << dir << "/rain_scaling.dat' index " << i
+      script << (i ? ", \\\n     " : "") << dir.quoted("rain_scaling.dat") << " index " << i
              << " using 1:" << panel[0] << " with linespoints lw 2 title '" << backends[i] << "'";
     }
     script << "\n";
   }
   script << "unset multiplot\n";
-  const report::ChartResult chart = report::run_gnuplot(script.str(), dir + "/rain_scaling.gp");
-  if (!chart.ok) problems.push_back(chart.message);
+  dir.chart("rain_scaling", "svg size 1100,500 dynamic background rgb 'white'", script.str());
 
   std::ostringstream md;
   md << "## Scaling: the rain scene\n\n`rain` with 100 to 3000 falling triangles into a bin of "
@@ -110,10 +96,10 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
        << " | " << fmt("%.1f", r.narrowphase_ns_per_pair) << " | "
        << fmt("%.0f", r.pairs_per_step) << " | " << fmt("%.3f", r.ratio_vs_box2d) << " | "
        << fmt("%.3f", r.ratio_vs_own) << " | " << fmt("%.3f", r.step_ratio_vs_own) << " | "
-       << detail::metres(r.pd_error_max) << " | " << r.fallbacks
+       << metres(r.pd_error_max) << " | " << r.fallbacks
        << (r.nan_detected ? " (NaN)" : "") << " |\n";
   }
   return md.str();
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::report

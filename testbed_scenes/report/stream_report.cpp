@@ -1,7 +1,5 @@
 #include "report/stream_report.hpp"
 
-#include <cstdio>
-#include <fstream>
 #include <ostream>
 #include <sstream>
 
@@ -13,7 +11,6 @@ namespace {
 
 using scenes::StreamResult;
 using scenes::StreamRunnerResult;
-using scenes::detail::fmt;
 
 double share(std::uint64_t part, std::uint64_t whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0;
@@ -27,24 +24,20 @@ double face_share(const scenes::StreamAgreement& a) {
 }  // namespace
 
 void write_stream_table(const std::vector<StreamResult>& results, std::ostream& out) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%-13s %-10s %8s %6s %6s %6s %8s %7s %8s %8s %9s %9s\n",
-                "scene", "runner", "calls", "world%", "tri%", "pts%", "ns/call", "xb2own", "count!=", "face!=",
-                "normal", "sep_m");
-  out << line;
+  out << table_line("%-13s %-10s %8s %6s %6s %6s %8s %7s %8s %8s %9s %9s\n", "scene", "runner",
+                    "calls", "world%", "tri%", "pts%", "ns/call", "xb2own", "count!=", "face!=",
+                    "normal", "sep_m");
   for (const StreamResult& r : results) {
     for (const StreamRunnerResult& x : r.runners) {
       const scenes::StreamAgreement& a = x.agreement;
-      std::snprintf(line, sizeof line,
-                    "%-13s %-10s %8llu %6.1f %6.1f %6.1f %8.1f %7.3f %8llu %8llu %9.2e %9.2e\n",
-                    r.scene.c_str(), x.runner.c_str(), static_cast<unsigned long long>(r.calls),
-                    100 * share(r.calls, r.world_evaluations),
-                    100 * share(r.triangle_calls, r.calls), 100 * share(r.calls_with_points, r.calls),
-                    x.ns_per_call, x.ratio_vs_box2d_own,
-                    static_cast<unsigned long long>(a.calls - a.same_point_count),
-                    static_cast<unsigned long long>(a.both_points - a.same_face),
-                    a.normal_angle_max, a.separation_diff_max);
-      out << line;
+      out << table_line(
+          "%-13s %-10s %8llu %6.1f %6.1f %6.1f %8.1f %7.3f %8llu %8llu %9.2e %9.2e\n",
+          r.scene.c_str(), x.runner.c_str(), static_cast<unsigned long long>(r.calls),
+          100 * share(r.calls, r.world_evaluations), 100 * share(r.triangle_calls, r.calls),
+          100 * share(r.calls_with_points, r.calls), x.ns_per_call, x.ratio_vs_box2d_own,
+          static_cast<unsigned long long>(a.calls - a.same_point_count),
+          static_cast<unsigned long long>(a.both_points - a.same_face), a.normal_angle_max,
+          a.separation_diff_max);
     }
   }
 }
@@ -65,45 +58,35 @@ void write_stream_csv(const std::vector<StreamResult>& results, std::ostream& ou
   }
 }
 
-std::string write_stream_outputs(const std::vector<StreamResult>& results, const std::string& dir,
-                                 std::vector<std::string>& problems) {
-  {
-    std::ofstream csv(dir + "/streams.csv");
-    write_stream_csv(results, csv);
-    if (!csv) problems.push_back("cannot write " + dir + "/streams.csv");
-  }
+std::string write_stream_outputs(const std::vector<StreamResult>& results,
+                                 ReportDirectory& dir) {
+  dir.write("streams.csv", [&](std::ostream& o) { write_stream_csv(results, o); });
   // One row per scene, one column per plug-in backend (box2d-own is 1 by definition).
   const std::size_t backends = results.empty() ? 0 : results.front().runners.size() - 1;
-  {
-    std::ofstream dat(dir + "/streams.dat");
-    dat << "# scene";
-    for (std::size_t k = 0; k < backends; ++k) dat << ' ' << results.front().runners[k].runner;
-    dat << " (ratio of ns per call to box2d-own)\n";
+  dir.write("streams.dat", [&](std::ostream& o) {
+    o << "# scene";
+    for (std::size_t k = 0; k < backends; ++k) o << ' ' << results.front().runners[k].runner;
+    o << " (ratio of ns per call to box2d-own)\n";
     for (const StreamResult& r : results) {
-      dat << r.scene;
-      for (std::size_t k = 0; k < backends; ++k) dat << ' ' << r.runners[k].ratio_vs_box2d_own;
-      dat << '\n';
+      std::vector<double> ratios;
+      for (std::size_t k = 0; k < backends; ++k) ratios.push_back(r.runners[k].ratio_vs_box2d_own);
+      write_data_line(o, r.scene, ratios);
     }
-    if (!dat) problems.push_back("cannot write " + dir + "/streams.dat");
-  }
+  });
   std::ostringstream script;
-  script << "set terminal svg size 1100,500 dynamic background rgb 'white'\n"
-            "set output '" << dir << "/streams.svg'\n"
-            "set title 'Contact streams: ns per call relative to b2CollidePolygons (box2d-own = 1)'\n"
+  script << "set title 'Contact streams: ns per call relative to b2CollidePolygons (box2d-own = "
+            "1)'\n"
             "set style data histograms\nset style histogram clustered gap 1\n"
             "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset grid ytics\n"
             "set key outside right top\nset xtics nomirror\nset ylabel 'ratio to box2d-own'\n"
             "set yrange [0:*]\nset arrow from graph 0, first 1 to graph 1, first 1 nohead dt 2\n"
             "plot ";
   for (std::size_t k = 0; k < backends; ++k) {
-    script << (k ? ", \\\n     " : "") << "'" << dir << "/streams.dat' using " << k + 2
+    script << (k ? ", \\\n     " : "") << dir.quoted("streams.dat") << " using " << k + 2
            << (k == 0 ? ":xtic(1)" : "") << " title '" << results.front().runners[k].runner << "'";
   }
   script << "\n";
-  if (backends > 0) {
-    const ChartResult chart = run_gnuplot(script.str(), dir + "/streams.gp");
-    if (!chart.ok) problems.push_back(chart.message);
-  }
+  if (backends > 0) dir.chart("streams", "svg size 1100,500 dynamic background rgb 'white'", script.str());
 
   std::ostringstream md;
   md << "## Contact streams\n\nEvery polygon-pair contact update of each Box2D scene's `Collide`, "
@@ -132,7 +115,7 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results, const
          << fmt("%.3f%%", 100 * share(a.same_point_count, a.calls)) << " ("
          << a.calls - a.same_point_count << " differ) | " << fmt("%.3f%%", 100 * face_share(a))
          << " (" << a.both_points - a.same_face << " differ) | " << fmt("%.2e", a.normal_angle_max)
-         << " | " << scenes::detail::metres(a.separation_diff_max) << " |\n";
+         << " | " << metres(a.separation_diff_max) << " |\n";
     }
   }
   return md.str();

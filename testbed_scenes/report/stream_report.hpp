@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "report/report_directory.hpp"
 #include "scenes/contact_stream.hpp"
 
 namespace dyop::report {
@@ -20,10 +21,10 @@ void write_stream_table(const std::vector<scenes::StreamResult>& results, std::o
 /// The CSV (header and one line per scene and runner).
 void write_stream_csv(const std::vector<scenes::StreamResult>& results, std::ostream& out);
 
-/// Writes `dir/streams.csv` and the chart `dir/streams.svg` (gnuplot: ratio to box2d-own per
-/// scene, one bar per backend) and returns the report's Markdown section. Problems are appended
-/// to `problems`.
+/// Writes `streams.csv` and the chart `streams.svg` in `dir` (gnuplot: ratio to box2d-own per
+/// scene, one bar per backend) and returns the report's Markdown section. Problems go to
+/// `dir.problems()`.
 std::string write_stream_outputs(const std::vector<scenes::StreamResult>& results,
-                                 const std::string& dir, std::vector<std::string>& problems);
+                                 ReportDirectory& dir);
 
 }  // namespace dyop::report

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <ostream>
 #include <type_traits>
 
 #include "exact_reference/exact_reference.hpp"
+#include "report/format.hpp"
+#include "report/json.hpp"
 #include "workloads/random.hpp"
 
 namespace dyop::report {
@@ -23,12 +24,6 @@ using V = Vec2<double>;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kVariants = 1 + invariance_count;  // the pair as generated, then each Invariance
-
-std::string fmt(const char* f, double x) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, f, x);
-  return buffer;
-}
 
 std::string csv_line(const RawPair& p) {
   std::string out;
@@ -276,40 +271,40 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
 }
 
 void write_table(const std::vector<StressRecord>& records, std::ostream& out) {
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "%-6s %-16s %-10s %6s %5s %9s %9s %6s %5s %5s %5s %5s %5s %6s %7s\n", "prec",
-                "class", "method", "pairs", "rej", "err_max", "err_p99", "nonfin", "miscl",
-                "inv_t", "inv_r", "inv_o", "inv_s", "design", "invalid");
-  out << line;
+  out << table_line("%-6s %-16s %-10s %6s %5s %9s %9s %6s %5s %5s %5s %5s %5s %6s %7s\n", "prec",
+                    "class", "method", "pairs", "rej", "err_max", "err_p99", "nonfin", "miscl",
+                    "inv_t", "inv_r", "inv_o", "inv_s", "design", "invalid");
   for (const StressRecord& r : records) {
-    std::snprintf(line, sizeof line,
-                  "%-6s %-16s %-10s %6d %5d %9.2e %9.2e %6d %5d %5d %5d %5d %5d %6d %7d\n",
-                  r.precision.c_str(), r.cls.c_str(), r.method.c_str(), r.pairs, r.rejected,
-                  r.err_max, r.err_p99, r.nonfinite, r.misclassified, r.invariance[0],
-                  r.invariance[1], r.invariance[2], r.invariance[3], r.invalid_by_design,
-                  r.invalid);
-    out << line;
+    out << table_line("%-6s %-16s %-10s %6d %5d %9.2e %9.2e %6d %5d %5d %5d %5d %5d %6d %7d\n",
+                      r.precision.c_str(), r.cls.c_str(), r.method.c_str(), r.pairs, r.rejected,
+                      r.err_max, r.err_p99, r.nonfinite, r.misclassified, r.invariance[0],
+                      r.invariance[1], r.invariance[2], r.invariance[3], r.invalid_by_design,
+                      r.invalid);
   }
 }
 
 void write_json(const std::vector<StressRecord>& records, std::ostream& out) {
-  // Every number written here is finite: errors are taken over finite answers only.
-  out << "[\n";
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    const StressRecord& r = records[i];
-    out << "  {\"method\": \"" << r.method << "\", \"class\": \"" << r.cls
-        << "\", \"precision\": \"" << r.precision << "\", \"pairs\": " << r.pairs
-        << ", \"rejected\": " << r.rejected << ", \"err_max\": " << fmt("%.6g", r.err_max)
-        << ", \"err_p99\": " << fmt("%.6g", r.err_p99) << ", \"nonfinite\": " << r.nonfinite
-        << ", \"misclassified\": " << r.misclassified << ", \"invariance\": {";
+  Json list = Json::array();
+  for (const StressRecord& r : records) {
+    Json invariance = Json::object();
     for (int k = 0; k < invariance_count; ++k) {
-      out << (k ? ", " : "") << '"' << name(static_cast<Invariance>(k)) << "\": " << r.invariance[k];
+      invariance[name(static_cast<Invariance>(k))] = r.invariance[k];
     }
-    out << "}, \"invalid_by_design\": " << r.invalid_by_design << ", \"invalid\": " << r.invalid
-        << ", \"worst_pair\": \"" << r.worst_pair << "\"}" << (i + 1 < records.size() ? ",\n" : "\n");
+    list.push_back({{"method", r.method},
+                    {"class", r.cls},
+                    {"precision", r.precision},
+                    {"pairs", r.pairs},
+                    {"rejected", r.rejected},
+                    {"err_max", json_number(r.err_max)},
+                    {"err_p99", json_number(r.err_p99)},
+                    {"nonfinite", r.nonfinite},
+                    {"misclassified", r.misclassified},
+                    {"invariance", invariance},
+                    {"invalid_by_design", r.invalid_by_design},
+                    {"invalid", r.invalid},
+                    {"worst_pair", r.worst_pair}});
   }
-  out << "]\n";
+  write_json_document(list, out);
 }
 
 void write_markdown(const std::vector<StressRecord>& records, std::ostream& out) {

@@ -90,7 +90,7 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
 /// The aligned table printed by `dyop stress`.
 void write_table(const std::vector<StressRecord>& records, std::ostream& out);
 
-/// A JSON list of records (every field of `StressRecord`).
+/// A JSON list of records (every field of `StressRecord` but `runner`, whose name is `method`).
 void write_json(const std::vector<StressRecord>& records, std::ostream& out);
 
 /// The README's stress section tables (Markdown): max error per runner and category, and the

@@ -4,8 +4,9 @@
 /// (`program/compare_command.hpp`): every scene under every backend, one table with the scene
 /// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, the
 /// paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every skip off and on).
-/// The report directory (`report.md`, the CSVs behind it, gnuplot charts and a snapshot of each
-/// scene) is written by `report/compare_report.hpp`.
+/// The tables are `report/compare_tables.hpp`'s; the report directory (`report.md`, the CSVs
+/// behind it, gnuplot charts and a snapshot of each scene) is written by
+/// `report/compare_report.hpp`.
 
 #include <array>
 #include <cstdint>
@@ -102,15 +103,5 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress);
 
 /// `m`'s narrow-phase time per pair over `box2d`'s for the same scene in `run` (none if absent).
 std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& m);
-
-/// The main table (Markdown).
-void write_compare_table(const CompareRun& run, std::ostream& out);
-
-/// The skip section's tables (Markdown): skips on against off per scene and backend, each switch
-/// alone in the breakdown scenes, and what skipping changes in `lin-canny`'s answers.
-void write_skip_tables(const CompareRun& run, std::ostream& out);
-
-/// The Figure-7 table and the per-method summary of the paper experiment (Markdown).
-void write_paper_tables(const paper::Experiment& e, std::ostream& out);
 
 }  // namespace dyop::scenes

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "report/format.hpp"
+#include "scenes/progress.hpp"
 #include "scenes/builders.hpp"
 #include "scenes/contact_probe.hpp"
 #include "scenes/scene.hpp"
@@ -280,8 +280,8 @@ std::vector<StreamResult> run_streams(const StreamOptions& options, std::ostream
     out.back().world_evaluations = evaluations;
     const double total = std::chrono::duration<double>(Clock::now() - start).count();
     progress << "dyop bench: stream " << scene << ": " << stream.calls.size() << " calls in "
-             << options.steps << " steps (worlds run in " << detail::fmt("%.1f", worlds)
-             << " s, replayed in " << detail::fmt("%.1f", total - worlds) << " s)\n";
+             << options.steps << " steps (worlds run in " << detail::fixed(worlds, 1)
+             << " s, replayed in " << detail::fixed(total - worlds, 1) << " s)\n";
   }
   return out;
 }

@@ -55,10 +55,4 @@ int in_world_repetitions(bool quick);
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
                               const std::function<SceneMetrics(const Runner&)>& run);
 
-/// The Markdown table: one row per scene and backend.
-void write_in_world_table(const std::vector<InWorldRatio>& rows, std::ostream& out);
-
-/// The CSV (header and one line per scene and backend).
-void write_in_world_csv(const std::vector<InWorldRatio>& rows, std::ostream& out);
-
 }  // namespace dyop::scenes

@@ -6,14 +6,14 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "report/format.hpp"
+#include "scenes/progress.hpp"
 #include "scenes/in_world.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
 
-using detail::fmt;
+using detail::fixed;
 
 SceneMetrics run_rain(const Runner& runner, int falling, const ScalingOptions& options) {
   const std::unique_ptr<Scene> scene = make_rain(falling, runner, options.seed);
@@ -64,10 +64,10 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       progress << "dyop bench: rain " << n << " triangles, " << box2d::name(b) << ": "
-               << fmt("%.2f", records.back().narrowphase_ms_per_step)
-               << " ms narrow phase per step, " << fmt("%.2f", pair.narrowphase_ratio())
-               << "x Box2D's own (step " << fmt("%.2f", pair.step_ratio()) << "x; "
-               << fmt("%.1f", s) << " s with the own run)\n";
+               << fixed(records.back().narrowphase_ms_per_step, 2)
+               << " ms narrow phase per step, " << fixed(pair.narrowphase_ratio(), 2)
+               << "x Box2D's own (step " << fixed(pair.step_ratio(), 2) << "x; "
+               << fixed(s, 1) << " s with the own run)\n";
     }
     // Box2D's own contact at this size: the run of median narrow-phase time.
     std::sort(own_runs.begin(), own_runs.end(), [](const SceneMetrics& x, const SceneMetrics& y) {

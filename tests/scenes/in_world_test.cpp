@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
+#include "report/compare_tables.hpp"
 #include "scenes/compare.hpp"
 #include "scenes/in_world.hpp"
 #include "scenes/scene.hpp"
@@ -77,8 +78,8 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
     EXPECT_GT(r.plugin.step_ms, 0);
   }
   std::ostringstream table, csv;
-  write_in_world_table(run.in_world, table);
-  write_in_world_csv(run.in_world, csv);
+  report::write_in_world_table(run.in_world, table);
+  report::write_in_world_csv(run.in_world, csv);
   EXPECT_NE(table.str().find("| mixed | dyop |"), std::string::npos) << table.str();
   const std::string text = csv.str();
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),

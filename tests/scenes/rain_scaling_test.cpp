@@ -79,10 +79,10 @@ TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2dAndToBox2DsOwnCont
   EXPECT_NE(progress.str().find("rain 60 triangles, epa"), std::string::npos);
 
   const std::string dir = ::testing::TempDir() + "rain_scaling_test";
-  std::filesystem::create_directories(dir);
-  std::vector<std::string> problems;
-  const std::string section = write_scaling_outputs(records, dir, problems);
-  for (const std::string& p : problems) {
+  report::ReportDirectory out(dir);
+  const std::string section = report::write_scaling_outputs(records, out);
+  for (const report::Problem& problem : out.problems()) {
+    const std::string& p = problem.message;
     EXPECT_EQ(p.rfind("cannot", 0), std::string::npos) << p;  // gnuplot may be missing, no more
   }
   std::ifstream csv(dir + "/scaling.csv");

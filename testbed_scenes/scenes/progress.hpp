@@ -1,0 +1,19 @@
+#pragma once
+// The runs' progress lines (standard error while a long run goes): seconds and ratios to a fixed
+// number of decimals. The scenes write no report: tables and files are report/'s, with its own
+// formatter.
+
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace dyop::scenes::detail {
+
+/// `v` with `decimals` digits after the point, as printf's "%.<decimals>f" writes it.
+inline std::string fixed(double v, int decimals) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << v;
+  return out.str();
+}
+
+}  // namespace dyop::scenes::detail
