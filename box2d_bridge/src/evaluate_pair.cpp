@@ -52,8 +52,7 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
   memory.shapes = valid_triangle(a) && valid_triangle(b)
                       ? ContactMemory::Shapes::Triangles
                       : ContactMemory::Shapes::InvalidTriangles;
-  memory.radius_a = bounding_radius(a);
-  memory.radius_b = bounding_radius(b);
+  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
 }
 
 void full_evaluation(b2Manifold* manifold, std::optional<Method> method, const Config& config,
@@ -66,8 +65,13 @@ void full_evaluation(b2Manifold* manifold, std::optional<Method> method, const C
     LinCannyCache cold;
     const Triangle<float> ta = placed(a);
     const Triangle<float> tb = placed(b, b_in_a);
+    // The internal-edge rule only where it applies: with no mask the query is the plain one.
+    const bool rule = config.internal_edges && info(*method).allowed_directions &&
+                      (memory.inactive_edges | memory.flat_vertices) != 0;
+    if (rule) ++counters().internal_edge_pairs;
     const TriangleManifold r = triangle_manifold(
-        *method, {ta, tb, a, b, b_in_a}, config.lin_canny_cache ? &memory.lin_canny : &cold);
+        *method, {ta, tb, a, b, b_in_a}, config.lin_canny_cache ? &memory.lin_canny : &cold,
+        rule ? memory.inactive_edges : 0, rule ? memory.flat_vertices : 0);
     answered = r.answered;
     if (answered) {
       memory.last_face = r.face;

@@ -60,7 +60,7 @@ inline float face_reach(float margin) { return margin + face_hysteresis; }
 // True when the bounding circles are farther apart than `far` (compared squared: no root).
 inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
                           const b2Transform& b_in_a, const ContactMemory& memory, float far) {
-  const float reach_sum = memory.radius_a + memory.radius_b + far;
+  const float reach_sum = memory.radius_sum + far;
   return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
 }
 

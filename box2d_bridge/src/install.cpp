@@ -1,4 +1,5 @@
 #include "backend.hpp"
+#include "body_edges.hpp"
 #include "installation.hpp"
 #include "triangle_contact.hpp"
 
@@ -32,6 +33,7 @@ InstallResult uninstall() {
   if (!now.backend) return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
   detail::register_polygon_contact(now.box2d_own);
   now.backend.reset();
+  detail::forget_bodies();
   return {InstallStatus::Done, "uninstalled: Box2D's own contact is registered again"};
 }
 

@@ -6,6 +6,7 @@
 #include <new>
 #include <typeinfo>
 
+#include "body_edges.hpp"
 #include "evaluate_pair.hpp"
 #include "installation.hpp"
 
@@ -59,6 +60,13 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
   if (!now.backend) {
     b2CollidePolygons(manifold, &a, xf_a, &b, xf_b);  // uninstalled: as Box2D's own contact
     return;
+  }
+  if (memory_.shapes == ContactMemory::Shapes::Unchecked) {
+    // Once per contact, whatever the switch says now, so that switching it on later holds.
+    const TriangleEdges ea = triangle_edges(*m_fixtureA);
+    const TriangleEdges eb = triangle_edges(*m_fixtureB);
+    memory_.inactive_edges = static_cast<std::uint8_t>(ea.inactive_edges | eb.inactive_edges << 3);
+    memory_.flat_vertices = static_cast<std::uint8_t>(ea.flat_vertices | eb.flat_vertices << 3);
   }
   evaluate_pair(manifold, *now.backend, now.config, a, xf_a, b, xf_b, memory_);
 }

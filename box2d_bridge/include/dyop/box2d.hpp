@@ -108,16 +108,34 @@ struct Config {
   /// `LinCanny` starts from the features the pair ended on last step; off: every step cold.
   bool lin_canny_cache = true;
 
-  /// Every skip on (the default).
+
+  /// Not a skip: it changes the answer. Edges two triangle fixtures of the same body share are
+  /// internal to that body (the same two vertices in the body frame, either order, bit for bit
+  /// as `b2PolygonShape` stores them), and so are the outline's flat and reflex vertices next to
+  /// them: the exact backends (`Dyop`, `Sat`) never push along them (`Query::inactive_edges`,
+  /// `Query::flat_vertices`), so bodies slide over triangulated grounds without ghost
+  /// collisions. Each contact finds its two triangles' internal edges once, on its first
+  /// evaluation, from a per-body index built when first needed and rebuilt when the body's
+  /// fixtures change (kept until `uninstall`). The other backends ignore it. Off: the world is
+  /// bit-identical to the plug-in's without it.
+  bool internal_edges = false;
+
+  /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }
-  /// Every skip off: the work of every step done in full.
-  static Config none() { return {false, false, false}; }
+  /// Every skip off: the work of every step done in full (internal edges as by default).
+  static Config none() {
+    Config c;
+    c.bounds_early_out = false;
+    c.warm_axis = false;
+    c.lin_canny_cache = false;
+    return c;
+  }
 };
 
-/// True when `x` and `y` switch the same skips.
+/// True when `x` and `y` switch the same skips and the same internal-edge rule.
 inline bool operator==(const Config& x, const Config& y) {
   return x.bounds_early_out == y.bounds_early_out && x.warm_axis == y.warm_axis &&
-         x.lin_canny_cache == y.lin_canny_cache;
+         x.lin_canny_cache == y.lin_canny_cache && x.internal_edges == y.internal_edges;
 }
 
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
@@ -155,10 +173,16 @@ struct ContactMemory {
   /// (`Config::warm_axis`).
   std::int8_t last_face = -1;
   Shapes shapes = Shapes::Unchecked;  ///< set by the first evaluation
-  /// `Shapes::Triangles`: distance from each shape's centroid (`m_centroid`) to its farthest
-  /// vertex, metres, body frame (`Config::bounds_early_out`).
-  float radius_a = 0;
-  float radius_b = 0;  ///< see `radius_a`
+  /// `Shapes::Triangles`: the sum, over the two shapes, of the distance from the shape's centroid
+  /// (`m_centroid`) to its farthest vertex, metres, body frame (`Config::bounds_early_out`).
+  float radius_sum = 0;
+  /// The two triangles' edges internal to their bodies, as `Query::inactive_edges` (bit i A's
+  /// edge i, bit 3 + i B's, Box2D's vertex order): set by a world's contact on its first
+  /// evaluation (`Config::internal_edges`); a caller of `collide_polygons` sets it itself.
+  std::uint8_t inactive_edges = 0;
+  /// Their vertices where the body's outline is flat or reflex, as `Query::flat_vertices`; see
+  /// `inactive_edges`.
+  std::uint8_t flat_vertices = 0;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
@@ -216,6 +240,9 @@ struct Stats {
   /// Triangle-pair evaluations answered without running the backend, per reason (index:
   /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`.
   std::array<std::uint64_t, skip_count> skipped{};
+  /// Triangle-pair evaluations run by an exact backend with internal edges or flat vertices in
+  /// force (`Config::internal_edges`): the pairs whose contact the rule may change.
+  std::uint64_t internal_edge_pairs = 0;
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }
   /// Evaluations skipped for reason `s`.

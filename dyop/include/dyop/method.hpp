@@ -101,6 +101,9 @@ struct MethodInfo {
   Accuracy accuracy;   ///< how exact it is by design
   PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
   PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
+  /// Honours `Query::inactive_edges` and `Query::flat_vertices` (the exact `dyop` and `sat`);
+  /// the others answer as if every axis were allowed.
+  bool allowed_directions = false;
 
   /// True when it answers queries at `level`.
   constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }
@@ -138,7 +141,7 @@ inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
      all_level_bits, true, false, true, Accuracy::Exact,
-     &detail::stateless<float, &dyop<float>>, &detail::stateless<double, &dyop<double>>},
+     &detail::stateless<float, &dyop<float>>, &detail::stateless<double, &dyop<double>>, true},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
      "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits, true,
      false, true, Accuracy::Approximate, &detail::stateless<float, &dyop_fast<float>>,
@@ -154,7 +157,7 @@ inline constexpr MethodInfo method_table[method_count] = {
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
      Entry::PerPair, all_level_bits, true, false, true, Accuracy::Exact,
-     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
+     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>, true},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
      all_level_bits, true, false, true, Accuracy::ToTolerance,
      &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},

@@ -82,6 +82,26 @@ struct Query {
   /// Level ≥ Depth: the distance of a pair found apart, or only a gap that proves it (`Apart`).
   /// The status is the same either way: a gap inside the touching band is decided by the distance.
   Apart apart = Apart::Distance;
+  /// Edges that are internal to a triangulated body (shared with another triangle of the same
+  /// body), whose normals are therefore not directions the body's outline allows: bit i is A's
+  /// edge i, bit 3 + i B's edge i (caller's order). Honoured by the exact methods (`dyop`,
+  /// `sat`; the other methods ignore it: `MethodInfo::allowed_directions`): such an edge is
+  /// never the reference face, nor the axis of `depth` and `normal`. The status (and, for pairs
+  /// apart, `separation` and `normal`) is still decided over all six axes, so a pair separated
+  /// only along an internal edge stays apart; and a manifold is empty when an axis that is not
+  /// allowed separates the pair by more than `margin`. Penetrating or touching: `depth`,
+  /// `normal` and the reference face are the least over the allowed axes (the exact depth of
+  /// the pair along the directions the outline allows). No axis allowed at all: the status,
+  /// `depth` and `normal` are the unrestricted answer and the manifold is empty (another pair
+  /// of the two bodies carries the contact). 0 (the default): every axis allowed, the plain
+  /// answer, bit for bit.
+  std::uint8_t inactive_edges = 0;
+  /// Vertices at which the body's outline is flat or reflex and that touch one allowed edge of
+  /// their own triangle (bit i A's vertex i, bit 3 + i B's, caller's order): the only direction
+  /// allowed there is that edge's normal, so an edge axis of the other triangle whose deepest
+  /// vertex is this one is not allowed either (same rules as `inactive_edges`). A box sliding
+  /// over a junction of two flat ground triangles is then pushed up, never back.
+  std::uint8_t flat_vertices = 0;
 };
 
 /// A vertex or an edge of one triangle, by caller's index.

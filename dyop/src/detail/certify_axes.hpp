@@ -6,17 +6,16 @@
 // cheaper than trying the axes one by one in any order. `find` locates the closest features of a
 // pair found apart (dyop passes its pivot's guess, certified; sat passes the full search).
 
+#include "detail/allowed_axes.hpp"
 #include "detail/fill_result.hpp"
 
 namespace dyop::detail {
 
-template <class T, class Find = AllFeatures<T>>
-Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& find = {}) {
-  const std::array<T, 6> overlap = all_overlaps(f);
-  const int best_a = argmin3(overlap, 0);
-  const int best_b = argmin3(overlap, 3);
-  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
-  Result<T> r;
+// The status from the least overlap of all six axes (`least`); a pair found apart is answered
+// whole here (true), a touching or penetrating one is left to the caller (false).
+template <class T, class Find>
+bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6>& overlap,
+                     int least, const Find& find, Result<T>& r) {
   const T band = touching_band(f);
   r.status = status_of_overlap(overlap[least], band);
   // A gap inside the band proves only that the pair does not overlap: along an edge normal it can
@@ -29,12 +28,55 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
     fill_gap(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
   } else if (r.status == Status::Separated) {
     fill_separated(f, q.level, r, find);
-  } else if (q.level >= Level::Contact) {
-    // The same arithmetic again on one axis, now keeping the deep vertex.
-    fill_from_axis(f, q.level, overlap_on_axis(f, least), r);
   } else {
-    fill_from_axis(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
+    return false;
   }
+  return true;
+}
+
+// A touching or penetrating pair answered on axis `axis`.
+template <class T>
+void answer_on_axis(const PairFrame<T>& f, Level level, const std::array<T, 6>& overlap,
+                    int axis, Result<T>& r) {
+  if (level >= Level::Contact) {
+    // The same arithmetic again on one axis, now keeping the deep vertex.
+    fill_from_axis(f, level, overlap_on_axis(f, axis), r);
+  } else {
+    fill_from_axis(f, level, AxisOverlap<T>{axis, overlap[axis], 0}, r);
+  }
+}
+
+// The answer when some axes are not allowed (`Query::inactive_edges`, `flat_vertices`): the
+// status over all six, the depth, normal and reference face over the allowed ones.
+template <class T, class Find>
+Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
+                               const std::array<T, 6>& overlap, const Find& find) {
+  const AllowedAxes<T> allowed = allowed_axes(f, q, overlap);
+  Result<T> r;
+  if (!answer_if_apart(f, q, overlap, allowed.least, find, r)) {
+    answer_on_axis(f, q.level, overlap, allowed.any() ? allowed.least_allowed() : allowed.least,
+                   r);
+  }
+  if (q.level != Level::Manifold) return r;
+  // No allowed axis, or one that is not allowed proves the pair apart beyond the margin: no
+  // contact from this pair, and the face fields name the axis that decided it.
+  if (!allowed.any() || overlap[allowed.least_blocked] < -q.margin) {
+    set_reference_face(f, allowed.any() ? allowed.least_blocked : allowed.least, r.manifold);
+    return r;
+  }
+  fill_manifold(f, q, allowed.reference(q.face_hysteresis), r);
+  return r;
+}
+
+template <class T, class Find = AllFeatures<T>>
+Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& find = {}) {
+  const std::array<T, 6> overlap = all_overlaps(f);
+  if ((q.inactive_edges | q.flat_vertices) != 0) return certify_allowed_axes(f, q, overlap, find);
+  const int best_a = argmin3(overlap, 0);
+  const int best_b = argmin3(overlap, 3);
+  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
+  Result<T> r;
+  if (!answer_if_apart(f, q, overlap, least, find, r)) answer_on_axis(f, q.level, overlap, least, r);
   fill_manifold(f, q,
                 pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
                                AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
