@@ -61,8 +61,10 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
     b2CollidePolygons(manifold, &a, xf_a, &b, xf_b);  // uninstalled: as Box2D's own contact
     return;
   }
-  if (memory_.shapes == ContactMemory::Shapes::Unchecked) {
-    // Once per contact, whatever the switch says now, so that switching it on later holds.
+  if (now.config.internal_edges && !memory_.edges_known) {
+    // Once per contact, the first time the rule is on: a world that never switches it on never
+    // pays for the search (callgrind, rain 150 steps: 11 M instructions of 175 M in Collide).
+    memory_.edges_known = true;
     const TriangleEdges ea = triangle_edges(*m_fixtureA);
     const TriangleEdges eb = triangle_edges(*m_fixtureB);
     memory_.inactive_edges = static_cast<std::uint8_t>(ea.inactive_edges | eb.inactive_edges << 3);

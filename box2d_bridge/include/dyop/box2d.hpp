@@ -178,11 +178,15 @@ struct ContactMemory {
   float radius_sum = 0;
   /// The two triangles' edges internal to their bodies, as `Query::inactive_edges` (bit i A's
   /// edge i, bit 3 + i B's, Box2D's vertex order): set by a world's contact on its first
-  /// evaluation (`Config::internal_edges`); a caller of `collide_polygons` sets it itself.
+  /// evaluation with `Config::internal_edges` on (`edges_known`); a caller of
+  /// `collide_polygons` sets it itself.
   std::uint8_t inactive_edges = 0;
   /// Their vertices where the body's outline is flat or reflex, as `Query::flat_vertices`; see
   /// `inactive_edges`.
   std::uint8_t flat_vertices = 0;
+  /// True once a world's contact has looked for `inactive_edges` and `flat_vertices` (only while
+  /// `Config::internal_edges` is on: with it off, contacts never pay for the search).
+  bool edges_known = false;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s

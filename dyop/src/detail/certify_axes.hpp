@@ -13,9 +13,13 @@ namespace dyop::detail {
 
 // The status from the least overlap of all six axes (`least`); a pair found apart is answered
 // whole here (true), a touching or penetrating one is left to the caller (false).
+// Always inlined: the plain path then costs what it did before the allowed-axes rule split it
+// up (callgrind, 150 steps, Collide: as calls, rain 166.5 M and pyramid 77.5 M instructions;
+// inlined, 165.4 M and 76.7 M).
 template <class T, class Find>
-bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6>& overlap,
-                     int least, const Find& find, Result<T>& r) {
+[[gnu::always_inline]] inline bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q,
+                                                  const std::array<T, 6>& overlap,
+                                                  int least, const Find& find, Result<T>& r) {
   const T band = touching_band(f);
   r.status = status_of_overlap(overlap[least], band);
   // A gap inside the band proves only that the pair does not overlap: along an edge normal it can
@@ -36,8 +40,9 @@ bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q, const std::array<
 
 // A touching or penetrating pair answered on axis `axis`.
 template <class T>
-void answer_on_axis(const PairFrame<T>& f, Level level, const std::array<T, 6>& overlap,
-                    int axis, Result<T>& r) {
+[[gnu::always_inline]] inline void answer_on_axis(const PairFrame<T>& f, Level level,
+                                                  const std::array<T, 6>& overlap,
+                                                  int axis, Result<T>& r) {
   if (level >= Level::Contact) {
     // The same arithmetic again on one axis, now keeping the deep vertex.
     fill_from_axis(f, level, overlap_on_axis(f, axis), r);
@@ -49,7 +54,7 @@ void answer_on_axis(const PairFrame<T>& f, Level level, const std::array<T, 6>& 
 // The answer when some axes are not allowed (`Query::inactive_edges`, `flat_vertices`): the
 // status over all six, the depth, normal and reference face over the allowed ones.
 template <class T, class Find>
-Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
+[[gnu::noinline]] Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
                                const std::array<T, 6>& overlap, const Find& find) {
   const AllowedAxes<T> allowed = allowed_axes(f, q, overlap);
   Result<T> r;
@@ -71,12 +76,19 @@ Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
 template <class T, class Find = AllFeatures<T>>
 Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& find = {}) {
   const std::array<T, 6> overlap = all_overlaps(f);
-  if ((q.inactive_edges | q.flat_vertices) != 0) return certify_allowed_axes(f, q, overlap, find);
+  Result<T> r;
+  if ((q.inactive_edges | q.flat_vertices) != 0) {
+    // Assigned, not returned: one named result on every path keeps the return value optimisation
+    // of the plain path (returning the call's value here cost the plain path 6 %).
+    r = certify_allowed_axes(f, q, overlap, find);
+    return r;
+  }
   const int best_a = argmin3(overlap, 0);
   const int best_b = argmin3(overlap, 3);
   const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
-  Result<T> r;
-  if (!answer_if_apart(f, q, overlap, least, find, r)) answer_on_axis(f, q.level, overlap, least, r);
+  if (!answer_if_apart(f, q, overlap, least, find, r)) {
+    answer_on_axis(f, q.level, overlap, least, r);
+  }
   fill_manifold(f, q,
                 pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
                                AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
