@@ -115,7 +115,8 @@ TEST_P(ExactBackend, FrictionlessBoxGlidesOverTriangulatedGrounds) {
     EXPECT_EQ(stats().fallbacks, 0u);
     ASSERT_TRUE(uninstall().ok());
     // The comparison, for the record: the switch off shows the ghost collisions.
-    std::printf("%-5s %-34s on: vy %.4f w %.4f travel %5.1f %% | off: vy %.4f w %.4f travel %5.1f %%\n",
+    std::printf("%-5s %-34s on: vy %.4f w %.4f travel %5.1f %% | off: vy %.4f w %.4f "
+                "travel %5.1f %%\n",
                 name(GetParam()), describe(c).c_str(), g.max_vertical, g.max_angular,
                 100 * g.travel, ghost.max_vertical, ghost.max_angular, 100 * ghost.travel);
     // Fan grounds: the triangles that touch the top at one vertex only (both their edges there
@@ -127,38 +128,37 @@ TEST_P(ExactBackend, FrictionlessBoxGlidesOverTriangulatedGrounds) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(InternalEdges, ExactBackend, ::testing::Values(Backend::Dyop, Backend::Sat),
+INSTANTIATE_TEST_SUITE_P(InternalEdges, ExactBackend,
+                         ::testing::Values(Backend::Dyop, Backend::Sat),
                          [](const ::testing::TestParamInfo<Backend>& i) {
                            return std::string(name(i.param));
                          });
 
-// Box2D's own contact on the same grounds, for the record (no assertion on Box2D).
-TEST(InternalEdgesComparison, BoxTwoDOwnContact) {
-  for (const Case& c : kCases) {
-    const Glide g = glide(c.cell, c.pattern, c.speed);
-    std::printf("box2d-own %-34s vy %.4f w %.4f travel %5.1f %%\n", describe(c).c_str(),
-                g.max_vertical, g.max_angular, 100 * g.travel);
-  }
-}
-
-// Index cost: a ground of ~5000 triangles, the first contact made on it builds the index.
-TEST(InternalEdgesCost, IndexBuildAndLookup) {
+// A ground of 5000 triangles: the first contact on it builds the body's index once, and the box
+// glides on it over 600 steps (3.6 m at 6 m/s) as on the small grounds. The index's cost is
+// printed, not asserted (speed is measured in benchmarks, not in tests).
+TEST(InternalEdges, OneIndexOfALargeGroundServesEveryContactOnIt) {
   Config on = Config::all();
   on.internal_edges = true;
   ASSERT_TRUE(install(Backend::Dyop, on).ok());
   World world;
   add_cell_ground(world, -312.5f, 625.0f, 0.25f, Pattern::Diagonal);  // 2500 cells · 2 = 5000
-  add_ice_box(world, 0.0f, 6.0f);
+  b2Body* box = add_ice_box(world, 0.0f, kSpeed);
   const auto t0 = std::chrono::steady_clock::now();
   world.step();  // the first contacts: one index build
   const auto t1 = std::chrono::steady_clock::now();
-  const Stats first = stats();
-  for (int i = 0; i < 600; ++i) world.step();
+  float max_vertical = 0;
+  for (int i = 0; i < 600; ++i) {
+    world.step();
+    max_vertical = std::max(max_vertical, std::abs(box->GetLinearVelocity().y));
+  }
   const auto t2 = std::chrono::steady_clock::now();
   std::printf("first step (index of 5000 triangles built): %.3f ms; 600 steps: %.3f ms\n",
               std::chrono::duration<double, std::milli>(t1 - t0).count(),
               std::chrono::duration<double, std::milli>(t2 - t1).count());
-  EXPECT_GT(first.triangle_pairs[0] + 1, 0u);
+  EXPECT_GT(stats().internal_edge_pairs, 0u);
+  EXPECT_LE(max_vertical, 0.05f);
+  EXPECT_GE(box->GetPosition().x, 0.98f * kSpeed * 600 / kStepsPerSecond);
   ASSERT_TRUE(uninstall().ok());
 }
 
