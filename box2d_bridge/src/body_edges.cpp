@@ -2,6 +2,7 @@
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_world.h>
 
 #include <cstring>
 #include <unordered_map>
@@ -54,22 +55,27 @@ struct VertexOutline {
   int outs = 0;
 };
 
-// What a body's index was built from: its fixture count and the head of its fixture list (a new
-// fixture goes to the head), and the head's shape and first two vertices (a destroyed head whose
-// memory a new fixture reuses).
+// What a body's index was built from. Checked in O(1) first: the world's broad-phase proxy count
+// (it moves when any fixture of the world is created or destroyed), the head of the body's fixture
+// list (a new fixture goes to the head) and the head's shape and vertices (a destroyed head whose
+// memory a new fixture reuses). Only when that changed is the list walked for its count, since
+// Box2D keeps the count private: an index is rebuilt only when the body's fixtures changed.
 struct Signature {
-  int count = 0;
+  int proxies = -1;
   const b2Fixture* head = nullptr;
   const b2Shape* head_shape = nullptr;
-  std::uint64_t head_vertices[2] = {0, 0};
-  bool operator==(const Signature& o) const {
-    return count == o.count && head == o.head && head_shape == o.head_shape &&
-           head_vertices[0] == o.head_vertices[0] && head_vertices[1] == o.head_vertices[1];
+  std::uint64_t head_vertices[3] = {0, 0, 0};
+  int count = 0;  // set by `count_fixtures`, not compared by `same_head`
+
+  bool same_head(const Signature& o) const {
+    return head == o.head && head_shape == o.head_shape && head_vertices[0] == o.head_vertices[0] &&
+           head_vertices[1] == o.head_vertices[1] && head_vertices[2] == o.head_vertices[2];
   }
 };
 
 struct BodyIndex {
   Signature signature;
+  bool built = false;
   std::unordered_map<const b2Fixture*, TriangleEdges> triangles;
 };
 
@@ -79,20 +85,24 @@ const b2PolygonShape* triangle_of(const b2Fixture& f) {
   return p->m_count == 3 ? p : nullptr;
 }
 
-Signature signature_of(const b2Body& body) {
+Signature quick_signature(const b2Body& body) {
   Signature s;
+  s.proxies = body.GetWorld()->GetProxyCount();
   const b2Fixture* head = body.GetFixtureList();
-  // Box2D keeps the count private: a walk over the list, once per contact made.
-  for (const b2Fixture* f = head; f; f = f->GetNext()) ++s.count;
   s.head = head;
   if (head) {
     s.head_shape = head->GetShape();
     if (const b2PolygonShape* p = triangle_of(*head)) {
-      s.head_vertices[0] = point_key(p->m_vertices[0]);
-      s.head_vertices[1] = point_key(p->m_vertices[1]);
+      for (int i = 0; i < 3; ++i) s.head_vertices[i] = point_key(p->m_vertices[i]);
     }
   }
   return s;
+}
+
+int count_fixtures(const b2Body& body) {
+  int count = 0;
+  for (const b2Fixture* f = body.GetFixtureList(); f; f = f->GetNext()) ++count;
+  return count;
 }
 
 void build(const b2Body& body, BodyIndex& index) {
@@ -131,9 +141,16 @@ void build(const b2Body& body, BodyIndex& index) {
     for (int i = 0; i < 3; ++i) {
       const bool out_internal = (t.inactive_edges >> i) & 1;
       const bool in_internal = (t.inactive_edges >> ((i + 2) % 3)) & 1;
-      // A corner of the triangle, or a vertex with no own outline edge (left unrestricted: the
-      // outline's normal there is no axis of the pair; see the fan grounds in the tests).
-      if (out_internal == in_internal) continue;
+      // A corner of the outline made by this triangle's own two edges: every direction between
+      // their normals is the outline's, as for a lone triangle.
+      if (!out_internal && !in_internal) continue;
+      // Both edges internal: the vertex is inside the body, or on the outline between other
+      // triangles' edges (a fan's apex touching the top), whose own pairs carry its contact with
+      // their edges' normals; none of this triangle's pairs may push there.
+      if (out_internal && in_internal) {
+        t.flat_vertices |= static_cast<std::uint8_t>(1u << i);
+        continue;
+      }
       const VertexOutline& v = outline[point_key(p->m_vertices[i])];
       if (v.ins != 1 || v.outs != 1) continue;  // not a simple outline vertex: left as it is
       const float turn = b2Cross(v.in, v.out);
@@ -149,22 +166,38 @@ std::unordered_map<const b2Body*, BodyIndex>& bodies() {
   return table;
 }
 
+void advance_generation() {
+  if (++index_generation_now == 0) index_generation_now = 1;  // 0: a contact that never looked
+}
+
 }  // namespace
 
 TriangleEdges triangle_edges(const b2Fixture& fixture) {
   if (!triangle_of(fixture)) return {};
   const b2Body& body = *fixture.GetBody();
   BodyIndex& index = bodies()[&body];
-  const Signature now = signature_of(body);
-  if (!(index.signature == now) || index.triangles.empty()) {
-    build(body, index);
+  Signature now = quick_signature(body);
+  if (!index.built || now.proxies != index.signature.proxies || !now.same_head(index.signature)) {
+    now.count = count_fixtures(body);
+    if (!index.built || now.count != index.signature.count || !now.same_head(index.signature)) {
+      build(body, index);
+      index.built = true;
+      advance_generation();
+    }
     index.signature = now;
   }
   const auto found = index.triangles.find(&fixture);
   return found == index.triangles.end() ? TriangleEdges{} : found->second;
 }
 
-void forget_bodies() { bodies().clear(); }
+void forget_body(const b2Body& body) {
+  if (bodies().erase(&body) > 0) advance_generation();
+}
+
+void forget_bodies() {
+  bodies().clear();
+  advance_generation();
+}
 
 int indexed_bodies() { return static_cast<int>(bodies().size()); }
 

@@ -177,16 +177,19 @@ struct ContactMemory {
   /// (`m_centroid`) to its farthest vertex, metres, body frame (`Config::bounds_early_out`).
   float radius_sum = 0;
   /// The two triangles' edges internal to their bodies, as `Query::inactive_edges` (bit i A's
-  /// edge i, bit 3 + i B's, Box2D's vertex order): set by a world's contact on its first
-  /// evaluation with `Config::internal_edges` on (`edges_known`); a caller of
-  /// `collide_polygons` sets it itself.
+  /// edge i, bit 3 + i B's, Box2D's vertex order): set by a world's contact while
+  /// `Config::internal_edges` is on (see `edges_generation`); a caller of `collide_polygons` sets
+  /// it itself.
   std::uint8_t inactive_edges = 0;
-  /// Their vertices where the body's outline is flat or reflex, as `Query::flat_vertices`; see
-  /// `inactive_edges`.
+  /// The vertices at which no axis of the other triangle may push, as `Query::flat_vertices`:
+  /// where the body's outline is flat or reflex next to an internal edge, or both of the
+  /// triangle's edges there are internal; set as `inactive_edges`.
   std::uint8_t flat_vertices = 0;
-  /// True once a world's contact has looked for `inactive_edges` and `flat_vertices` (only while
-  /// `Config::internal_edges` is on: with it off, contacts never pay for the search).
-  bool edges_known = false;
+  /// A world's contact: the generation of the plug-in's internal-edge index the two masks were
+  /// taken at, 0 never (only while `Config::internal_edges` is on: with it off, contacts never
+  /// pay for the search). The index's generation moves when a body's fixtures change, and the
+  /// contact then takes its masks again.
+  std::uint8_t edges_generation = 0;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s

@@ -96,11 +96,15 @@ struct Query {
   /// of the two bodies carries the contact). 0 (the default): every axis allowed, the plain
   /// answer, bit for bit.
   std::uint8_t inactive_edges = 0;
-  /// Vertices at which the body's outline is flat or reflex and that touch one allowed edge of
-  /// their own triangle (bit i A's vertex i, bit 3 + i B's, caller's order): the only direction
-  /// allowed there is that edge's normal, so an edge axis of the other triangle whose deepest
-  /// vertex is this one is not allowed either (same rules as `inactive_edges`). A box sliding
-  /// over a junction of two flat ground triangles is then pushed up, never back.
+  /// Vertices at which no edge axis of the other triangle is allowed (bit i A's vertex i, bit
+  /// 3 + i B's, caller's order): an edge axis of the other triangle whose deepest vertex is one
+  /// of these is not allowed (same rules as `inactive_edges`). A caller marks (the plug-in
+  /// does) a vertex where the body's outline is flat or reflex and one of its own triangle's
+  /// edges there is allowed (that edge's normal, an axis of its own, is the only direction the
+  /// outline allows there), and a vertex whose two edges in its triangle are both internal (inside
+  /// the body, or on the outline between other triangles' edges, whose own pairs carry its
+  /// contact). A box sliding over a junction of flat ground triangles is then pushed up, never
+  /// back.
   std::uint8_t flat_vertices = 0;
 };
 
