@@ -125,6 +125,25 @@ TYPED_TEST(InactiveEdges, DeepPenetrationWhereOnlyTheOutlineIsAllowed) {
   });
 }
 
+// The lower-right triangle of the cell, C = (1,-1) (2,-1) (2,0), touches the top only at its
+// apex (2,0), where both its edges are internal (edge 1 at x = 2, edge 2 the diagonal); its only
+// outline edge is the bottom, y = -1. B, a box's triangle resting on the top across the apex
+// 0.01 deep, reaches the bottom nowhere: the bottom is allowed by the masks but is no way out,
+// and the pair gives no contact (the top triangles carry it). Unrestricted: 0.01 up.
+TYPED_TEST(InactiveEdges, AnOutlineEdgeTheOtherTriangleDoesNotReachIsNoAxis) {
+  using T = TypeParam;
+  const auto c = tri<T>(1, -1, 2, -1, 2, 0);
+  const auto b = tri<T>(T(1.7), T(-0.01), T(2.3), T(-0.01), T(2.3), T(0.5));
+  for_exact_methods<T>([&](Method m) {
+    const Result<T> plain = penetrate(m, c, b, query<T>(Level::Depth, 0, 0));
+    EXPECT_NEAR(plain.depth, T(0.01), 10 * tol<T>());
+    const Result<T> r = penetrate(m, c, b, query<T>(Level::Manifold, 0b110, 0b111));
+    EXPECT_EQ(r.status, Status::Penetrating);
+    EXPECT_LT(r.depth, T(0.5));  // never the 1.01 m push through the bottom
+    EXPECT_EQ(r.manifold.point_count, 0);
+  });
+}
+
 // Apart by 0.05 along the internal edge only (B left of x = 1, level with the top): the status
 // is decided over all axes, and a manifold is empty beyond the margin.
 TYPED_TEST(InactiveEdges, SeparatedAlongAnInternalEdgeStaysApart) {

@@ -24,6 +24,7 @@ InstallResult install(Backend backend, const Config& config) {
                                     &detail::TriangleContact::destroy});
   now.backend = backend;
   now.config = config;
+  now.find_internal_edges = config.internal_edges && info(backend).allowed_directions;
   reset_stats();
   return {InstallStatus::Done, "installed"};
 }
@@ -33,6 +34,7 @@ InstallResult uninstall() {
   if (!now.backend) return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
   detail::register_polygon_contact(now.box2d_own);
   now.backend.reset();
+  now.find_internal_edges = false;
   detail::forget_bodies();
   return {InstallStatus::Done, "uninstalled: Box2D's own contact is registered again"};
 }

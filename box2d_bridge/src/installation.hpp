@@ -13,6 +13,9 @@ struct Installation {
   // own contact does (`b2CollidePolygons`).
   std::optional<Backend> backend;
   Config config;  // the skips of `backend`
+  // `config.internal_edges` and a backend that honours it (`MethodInfo::allowed_directions`):
+  // only then do contacts look for their internal edges.
+  bool find_internal_edges = false;
   // What was registered for polygon pairs before the first install: Box2D's own
   // b2PolygonContact (its functions are not exported, so they can only be saved from the
   // registry). Valid once `saved` is true.

@@ -135,13 +135,11 @@ class ExactBackend : public ::testing::TestWithParam<Backend> {};
 TEST_P(ExactBackend, FrictionlessBoxGlidesOverTriangulatedGrounds) {
   for (const Case& c : kCases) {
     SCOPED_TRACE(describe(c));
-    Config off = Config::all();
+    Config off;
     off.internal_edges = false;
-    Config on = off;
-    on.internal_edges = true;
     ASSERT_TRUE(install(GetParam(), off).ok());
     const Glide ghost = glide(c.cell, c.pattern, c.slider, c.speed);
-    ASSERT_TRUE(install(GetParam(), on).ok());
+    ASSERT_TRUE(install(GetParam()).ok());  // the rule is on by default
     const Glide g = glide(c.cell, c.pattern, c.slider, c.speed);
     EXPECT_GT(stats().internal_edge_pairs, 0u);
     EXPECT_EQ(stats().fallbacks, 0u);
@@ -167,9 +165,7 @@ INSTANTIATE_TEST_SUITE_P(InternalEdges, ExactBackend,
 // glides on it over 600 steps (3.6 m at 6 m/s) as on the small grounds. The index's cost is
 // printed, not asserted (speed is measured in benchmarks, not in tests).
 TEST(InternalEdges, OneIndexOfALargeGroundServesEveryContactOnIt) {
-  Config on = Config::all();
-  on.internal_edges = true;
-  ASSERT_TRUE(install(Backend::Dyop, on).ok());
+  ASSERT_TRUE(install(Backend::Dyop).ok());
   World world;
   add_cell_ground(world, -312.5f, 625.0f, 0.25f, Pattern::Diagonal);  // 2500 cells · 2 = 5000
   b2Body* box = add_slider(world, Slider::Box, 0.0f, kSpeed);
@@ -192,11 +188,13 @@ TEST(InternalEdges, OneIndexOfALargeGroundServesEveryContactOnIt) {
 }
 
 
-// The rule on, for the world tests below.
-Config rule_on() {
-  Config c = Config::all();
-  c.internal_edges = true;
-  return c;
+// The rule on, as by default, for the world tests below.
+Config rule_on() { return Config{}; }
+
+TEST(InternalEdges, TheRuleIsOnByDefault) {
+  EXPECT_TRUE(Config{}.internal_edges);
+  EXPECT_TRUE(Config::all().internal_edges);
+  EXPECT_TRUE(Config::none().internal_edges);  // not a skip
 }
 
 // Ground fixtures of cell `column` in `row` (0: top row) of a diagonal ground built at x0 = 0:

@@ -109,16 +109,18 @@ struct Config {
   bool lin_canny_cache = true;
 
 
-  /// Not a skip: it changes the answer. Edges two triangle fixtures of the same body share are
-  /// internal to that body (the same two vertices in the body frame, either order, bit for bit
-  /// as `b2PolygonShape` stores them), and so are the outline's flat and reflex vertices next to
-  /// them: the exact backends (`Dyop`, `Sat`) never push along them (`Query::inactive_edges`,
+  /// Not a skip: it changes the answer (on by default). Edges two triangle fixtures of the same
+  /// body share are internal to that body (the same two vertices in the body frame, either
+  /// order, bit for bit as `b2PolygonShape` stores them); the outline's flat and reflex vertices
+  /// next to them, and vertices whose two edges are both internal, are where no other triangle may
+  /// push. The exact backends (`Dyop`, `Sat`) never push along them (`Query::inactive_edges`,
   /// `Query::flat_vertices`), so bodies slide over triangulated grounds without ghost
-  /// collisions. Each contact finds its two triangles' internal edges once, on its first
-  /// evaluation, from a per-body index built when first needed and rebuilt when the body's
-  /// fixtures change (kept until `uninstall`). The other backends ignore it. Off: the world is
-  /// bit-identical to the plug-in's without it.
-  bool internal_edges = false;
+  /// collisions; edges shared by two bodies stay outline edges. A contact takes its two
+  /// triangles' masks on its first evaluation, from a per-body index built when first needed,
+  /// and again when a body's fixtures have changed (the index is kept until `uninstall`). The
+  /// other backends ignore it and never look. Off: the world is bit-identical to Box2D's own
+  /// handling of each fixture alone, as the plug-in was without the rule.
+  bool internal_edges = true;
 
   /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }

@@ -8,9 +8,11 @@
 // outline's only direction is the normal of that body's own edge there, which is an axis of its
 // own.
 
+#include <algorithm>
 #include <array>
 
 #include "detail/axis_overlap.hpp"
+#include "detail/fill_result.hpp"
 #include "dyop/result.hpp"
 
 namespace dyop::detail {
@@ -50,6 +52,31 @@ bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
   return ((q.inactive_edges >> edge_bit) & 1) == 0 && ((q.flat_vertices >> vertex_bit) & 1) == 0;
 }
 
+// True when the other triangle touches axis k's edge, the segment, within `tol` (exact
+// separating-axis test of a segment and a triangle: the segment's normal and the triangle's three
+// normals). A push along the edge's normal is a push back out through that edge; an outline edge
+// the other triangle does not reach (the bottom of a ground triangle whose apex a box touches) is
+// no way out of the body, however allowed its direction.
+template <class T>
+bool edge_touched(const PairFrame<T>& f, int k, T tol) {
+  const bool own_is_a = k < 3;
+  const int i = own_is_a ? k : k - 3;
+  const std::array<Vec2<T>, 3>& own = own_is_a ? f.a : f.b;
+  const std::array<Vec2<T>, 3>& other = own_is_a ? f.b : f.a;
+  const Triangle<T>& own_triangle = own_is_a ? f.ta : f.tb;
+  const Triangle<T>& other_triangle = own_is_a ? f.tb : f.ta;
+  const Vec2<T>& p = own[i];
+  const Vec2<T>& q = own[next3(i)];
+  const Vec2<T>& n = own_triangle.normal(i);
+  const T outside = std::max({n.dot(other[0] - p), n.dot(other[1] - p), n.dot(other[2] - p)});
+  if (outside < -tol) return false;  // the other triangle lies wholly inside the edge's line
+  for (int j = 0; j < 3; ++j) {
+    const Vec2<T>& m = other_triangle.normal(j);
+    if (std::min(m.dot(p - other[j]), m.dot(q - other[j])) > tol) return false;
+  }
+  return true;
+}
+
 template <class T>
 AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
                             const std::array<T, 6>& overlap) {
@@ -58,8 +85,25 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   const int all_a = argmin3(overlap, 0);
   const int all_b = argmin3(overlap, 3);
   out.least = overlap[all_b] < overlap[all_a] ? all_b : all_a;
+  // An edge's reach: the manifold's margin and the touching band (both lengths).
+  const T tol = q.margin + touching_band(f);
+  std::array<bool, 6> by_mask{};
+  bool touched_a = false;  // B reaches an edge of A
+  bool touched_b = false;  // A reaches an edge of B
   for (int k = 0; k < 6; ++k) {
-    int& best = axis_allowed(f, q, k) ? (k < 3 ? out.best_a : out.best_b) : out.least_blocked;
+    const bool touched = edge_touched(f, k, tol);
+    (k < 3 ? touched_a : touched_b) |= touched;
+    by_mask[k] = axis_allowed(f, q, k);
+    const bool allowed = by_mask[k] && touched;
+    int& best = allowed ? (k < 3 ? out.best_a : out.best_b) : out.least_blocked;
+    if (best < 0 || overlap[k] < overlap[best]) best = k;
+  }
+  if (touched_a && touched_b) return out;
+  // One triangle reaches no edge of the other: the other holds it whole (a body sunk into a large
+  // triangle). The masks alone then decide, so that it is pushed out through the outline.
+  out.best_a = out.best_b = out.least_blocked = -1;
+  for (int k = 0; k < 6; ++k) {
+    int& best = by_mask[k] ? (k < 3 ? out.best_a : out.best_b) : out.least_blocked;
     if (best < 0 || overlap[k] < overlap[best]) best = k;
   }
   return out;
