@@ -4,9 +4,13 @@
 //
 // Axis k is an edge normal of one triangle, realised at the other triangle's deepest vertex
 // along it (first on ties, as `overlap_on_axis` picks it). It is allowed when its edge is not
-// internal and its deepest vertex is not a flat vertex of the other body: at a flat vertex the
-// outline's only direction is the normal of that body's own edge there, which is an axis of its
-// own.
+// internal and its deepest vertex is not a flat vertex of the other body (there the outline's
+// directions are other axes, of its own triangle's or of its neighbours' pairs). It is usable
+// when, besides, the other triangle reaches the edge: a push along an edge's normal is a push
+// back out through that edge.
+//
+// Used only for pairs not apart beyond the margin (`certify_axes` answers those plainly): no axis
+// then separates the pair beyond the margin, whether usable or not.
 
 #include <algorithm>
 #include <array>
@@ -20,19 +24,18 @@ namespace dyop::detail {
 template <class T>
 struct AllowedAxes {
   std::array<T, 6> overlap;
-  int least = 0;           // least overlap of all six (A's on ties): decides the status
-  int least_blocked = -1;  // least overlap among the axes not allowed; -1: every axis allowed
-  int best_a = -1;         // least allowed axis of A's; -1: none
-  int best_b = -1;         // least allowed axis of B's; -1: none
+  int least = 0;    // least overlap of all six (A's on ties): decides the status
+  int best_a = -1;  // least usable axis of A's; -1: none
+  int best_b = -1;  // least usable axis of B's; -1: none
 
   bool any() const { return best_a >= 0 || best_b >= 0; }
-  // The least allowed axis (A's on ties); `any()` must hold.
+  // The least usable axis (A's on ties); `any()` must hold.
   int least_allowed() const {
     if (best_a < 0) return best_b;
     if (best_b < 0) return best_a;
     return overlap[best_b] < overlap[best_a] ? best_b : best_a;
   }
-  // Box2D's reference face among the allowed axes; `any()` must hold.
+  // Box2D's reference face among the usable axes; `any()` must hold.
   AxisOverlap<T> reference(T hysteresis) const {
     const AxisOverlap<T> a{best_a, best_a >= 0 ? overlap[best_a] : T(0), 0};
     const AxisOverlap<T> b{best_b, best_b >= 0 ? overlap[best_b] : T(0), 0};
@@ -43,13 +46,17 @@ struct AllowedAxes {
 };
 
 // True when axis k of `f` is allowed by `q`'s masks (caller's order, see `Query`).
+// The deep vertex is looked for only when the other triangle has flat vertices at all.
 template <class T>
 bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
-  const int deep = overlap_on_axis(f, k).deep;
   const bool own_is_a = k < 3;
   const int edge_bit = own_is_a ? f.ta.input_edge(k) : 3 + f.tb.input_edge(k - 3);
-  const int vertex_bit = own_is_a ? 3 + f.tb.input_vertex(deep) : f.ta.input_vertex(deep);
-  return ((q.inactive_edges >> edge_bit) & 1) == 0 && ((q.flat_vertices >> vertex_bit) & 1) == 0;
+  if ((q.inactive_edges >> edge_bit) & 1) return false;
+  const int other_flat = own_is_a ? q.flat_vertices >> 3 : q.flat_vertices & 7;
+  if (other_flat == 0) return true;
+  const int deep = overlap_on_axis(f, k).deep;
+  const int vertex = own_is_a ? f.tb.input_vertex(deep) : f.ta.input_vertex(deep);
+  return ((other_flat >> vertex) & 1) == 0;
 }
 
 // True when the other triangle touches axis k's edge, the segment, within `tol` (exact
@@ -77,6 +84,51 @@ bool edge_touched(const PairFrame<T>& f, int k, T tol) {
   return true;
 }
 
+// An edge's reach in `edge_touched`: the manifold's margin and the touching band (both lengths).
+template <class T>
+T edge_reach(const PairFrame<T>& f, const Query<T>& q) {
+  return q.margin + touching_band(f);
+}
+
+// Axis k is one the pair may be answered on: allowed by the masks and its edge reached.
+template <class T>
+bool axis_usable(const PairFrame<T>& f, const Query<T>& q, int k) {
+  return axis_allowed(f, q, k) && edge_touched(f, k, edge_reach(f, q));
+}
+
+// One triangle's least usable axis (`first`: 0 for A's, 3 for B's), trying its axes from the
+// least overlap up (first on ties, as `argmin3`), so that the usual pair checks one. `reached`:
+// whether the other triangle reaches any of its edges (exact when none is usable).
+template <class T>
+int least_usable(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6>& overlap,
+                 int first, bool& reached) {
+  // Sorted by hand: std::sort's buffer for three indices cost more than the rule's checks.
+  std::array<int, 3> order = {first, first + 1, first + 2};
+  const auto before = [&](int x, int y) { return overlap[y] < overlap[x]; };  // y goes first
+  if (before(order[0], order[1])) std::swap(order[0], order[1]);
+  if (before(order[1], order[2])) std::swap(order[1], order[2]);
+  if (before(order[0], order[1])) std::swap(order[0], order[1]);
+  const T reach = edge_reach(f, q);
+  reached = false;
+  for (const int k : order) {
+    const bool touched = edge_touched(f, k, reach);
+    reached = reached || touched;
+    if (touched && axis_allowed(f, q, k)) return k;
+  }
+  return -1;
+}
+
+// One triangle's least axis allowed by the masks alone; -1: none.
+template <class T>
+int least_allowed_by_masks(const PairFrame<T>& f, const Query<T>& q,
+                           const std::array<T, 6>& overlap, int first) {
+  int best = -1;
+  for (int k = first; k < first + 3; ++k) {
+    if (axis_allowed(f, q, k) && (best < 0 || overlap[k] < overlap[best])) best = k;
+  }
+  return best;
+}
+
 template <class T>
 AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
                             const std::array<T, 6>& overlap) {
@@ -85,27 +137,15 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   const int all_a = argmin3(overlap, 0);
   const int all_b = argmin3(overlap, 3);
   out.least = overlap[all_b] < overlap[all_a] ? all_b : all_a;
-  // An edge's reach: the manifold's margin and the touching band (both lengths).
-  const T tol = q.margin + touching_band(f);
-  std::array<bool, 6> by_mask{};
-  bool touched_a = false;  // B reaches an edge of A
-  bool touched_b = false;  // A reaches an edge of B
-  for (int k = 0; k < 6; ++k) {
-    const bool touched = edge_touched(f, k, tol);
-    (k < 3 ? touched_a : touched_b) |= touched;
-    by_mask[k] = axis_allowed(f, q, k);
-    const bool allowed = by_mask[k] && touched;
-    int& best = allowed ? (k < 3 ? out.best_a : out.best_b) : out.least_blocked;
-    if (best < 0 || overlap[k] < overlap[best]) best = k;
-  }
-  if (touched_a && touched_b) return out;
+  bool reached_a = false;  // B reaches an edge of A
+  bool reached_b = false;  // A reaches an edge of B
+  out.best_a = least_usable(f, q, overlap, 0, reached_a);
+  out.best_b = least_usable(f, q, overlap, 3, reached_b);
+  if (reached_a && reached_b) return out;
   // One triangle reaches no edge of the other: the other holds it whole (a body sunk into a large
   // triangle). The masks alone then decide, so that it is pushed out through the outline.
-  out.best_a = out.best_b = out.least_blocked = -1;
-  for (int k = 0; k < 6; ++k) {
-    int& best = by_mask[k] ? (k < 3 ? out.best_a : out.best_b) : out.least_blocked;
-    if (best < 0 || overlap[k] < overlap[best]) best = k;
-  }
+  out.best_a = least_allowed_by_masks(f, q, overlap, 0);
+  out.best_b = least_allowed_by_masks(f, q, overlap, 3);
   return out;
 }
 

@@ -63,10 +63,10 @@ template <class T, class Find>
                    r);
   }
   if (q.level != Level::Manifold) return r;
-  // No allowed axis, or one that is not allowed proves the pair apart beyond the margin: no
-  // contact from this pair, and the face fields name the axis that decided it.
-  if (!allowed.any() || overlap[allowed.least_blocked] < -q.margin) {
-    set_reference_face(f, allowed.any() ? allowed.least_blocked : allowed.least, r.manifold);
+  // No usable axis: no contact from this pair (another pair of the two bodies carries it), and
+  // the face fields name the least axis.
+  if (!allowed.any()) {
+    set_reference_face(f, allowed.least, r.manifold);
     return r;
   }
   fill_manifold(f, q, allowed.reference(q.face_hysteresis), r);
@@ -77,22 +77,33 @@ template <class T, class Find = AllFeatures<T>>
 Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& find = {}) {
   const std::array<T, 6> overlap = all_overlaps(f);
   Result<T> r;
-  if ((q.inactive_edges | q.flat_vertices) != 0) {
+  const int best_a = argmin3(overlap, 0);
+  const int best_b = argmin3(overlap, 3);
+  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
+  const AxisOverlap<T> reference =
+      pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
+                     AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis);
+  // With masks, the plain answer stands when the pair is apart beyond the margin (the status,
+  // gap and normal are decided over all six axes, and the manifold is empty either way), or when
+  // the masks allow the axis of its depth and normal (`least`) and its reference face: the push is
+  // then the least of all, along a direction the outline allows, and whether the other triangle
+  // reaches that edge does not matter (an edge it does not reach is refused only as a larger
+  // push through the body). Otherwise the full rule, out of line. A pyramid of split boxes has
+  // masks on every pair: one or two mask checks each keep it near the plain cost (callgrind,
+  // 150 steps, Collide: 146 M instructions with the full rule on every pair, 95 M with both
+  // checks reaching the edges, 76.6 M plain).
+  if ((q.inactive_edges | q.flat_vertices) != 0 && overlap[least] >= -q.margin &&
+      !(axis_allowed(f, q, least) &&
+        (reference.axis == least || axis_allowed(f, q, reference.axis)))) {
     // Assigned, not returned: one named result on every path keeps the return value optimisation
     // of the plain path (returning the call's value here cost the plain path 6 %).
     r = certify_allowed_axes(f, q, overlap, find);
     return r;
   }
-  const int best_a = argmin3(overlap, 0);
-  const int best_b = argmin3(overlap, 3);
-  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
   if (!answer_if_apart(f, q, overlap, least, find, r)) {
     answer_on_axis(f, q.level, overlap, least, r);
   }
-  fill_manifold(f, q,
-                pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
-                               AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis),
-                r);
+  fill_manifold(f, q, reference, r);
   return r;
 }
 
