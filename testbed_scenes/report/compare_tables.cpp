@@ -208,8 +208,8 @@ void write_slide_tables(const std::vector<scenes::SlideRun>& runs, std::ostream&
         << (sliders[k].rolling ? " (rolling)" : "") << " |";
     for (const scenes::SlideRun& r : runs) {
       const scenes::SliderFigures& f = r.metrics.slide->sliders.at(k);
-      out << " vy " << fmt("%.3f", f.max_vertical_speed) << ", ω " << fmt("%.2f", f.max_angular_speed)
-          << ", " << percent(f.travel) << " |";
+      out << " vy " << fmt("%.3f", f.max_vertical_speed) << ", ω "
+          << fmt("%.2f", f.max_angular_speed) << ", " << percent(f.travel) << " |";
     }
     out << '\n';
   }

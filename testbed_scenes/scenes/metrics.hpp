@@ -21,7 +21,8 @@ namespace dyop::scenes {
 /// One body of the `slide` scene launched along +x over a flat ground, measured over the whole
 /// run (from step 1).
 struct SliderFigures {
-  std::string body;    ///< "box" (2 triangle fixtures), "L" (6), "wheel" (a polygon fanned)
+  /// "box" (2 triangle fixtures), "L" (6), "wheel" (16 fanned from its centre)
+  std::string body;
   /// Its ground's top: "one-piece" (two large triangles), "diagonal-1m", "diagonal-0.25m" (square
   /// cells split along a diagonal), "fan-0.25m" (cells split in 4 around their centre).
   std::string ground;
@@ -30,7 +31,8 @@ struct SliderFigures {
   bool rolling = false;
   double max_vertical_speed = 0;  ///< largest |v_y| of its centre of mass (m/s)
   double max_angular_speed = 0;   ///< largest |ω| (rad/s)
-  /// x distance travelled over launch speed × time run (a fraction; 1: a frictionless glide).
+  /// Distance travelled along x over launch speed × time run (a fraction; 1: a frictionless
+  /// glide; below 0 when a trip threw it back).
   double travel = 0;
 };
 

@@ -27,9 +27,9 @@ struct SliderPath {
 
 /// The `slide` scene run under one runner.
 struct SlideRun {
-  SceneMetrics metrics;            ///< its figures (`metrics.slide` holds the sliders')
-  std::vector<SliderPath> paths;   ///< one per slider, in `metrics.slide->sliders` order
-  Drawing final_state;             ///< the world after the last step
+  SceneMetrics metrics;           ///< its figures (`metrics.slide` holds the sliders')
+  std::vector<SliderPath> paths;  ///< one per slider, in `metrics.slide->sliders` order
+  Drawing final_state;            ///< the world after the last step
 };
 
 /// Runs `slide` for `steps` steps under `runner` with `config`, recording the paths.

@@ -26,7 +26,7 @@ namespace dyop::scenes {
 /// A body launched along +x (scene `slide`), measured while it goes.
 struct Slider {
   b2Body* body = nullptr;
-  double speed = 0;      ///< launch speed along +x (m/s): its travel's yardstick
+  double speed = 0;  ///< launch speed along +x (m/s): its travel's yardstick
   /// What it is and where (`body`, `ground`, `rolling`); the scene fills in the figures.
   SliderFigures figures;
 };
