@@ -41,6 +41,11 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
     write_in_world_table(run.in_world, out);
   }
+  if (!run.slide.empty()) {
+    out << "\nSliding over triangulated grounds (scene `slide`), Box2D's own contact against the "
+           "plug-in:\n\n";
+    write_slide_tables(run.slide, out);
+  }
   if (!run.skips.empty()) {
     out << "\nSkipping what a scene doesn't need:\n\n";
     write_skip_tables(run, out);

@@ -34,6 +34,18 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
   if (m.top_displacement) out << ", top displacement " << *m.top_displacement << " m";
   if (m.fallbacks) out << ", fallbacks to Box2D " << *m.fallbacks;
   out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << hash_hex(m.hash) << '\n';
+  if (m.slide) {
+    out << "  sliding bodies: largest |vy| " << m.slide->max_vertical_speed << " m/s, |w| "
+        << m.slide->max_angular_speed << " rad/s, smallest travel " << 100 * m.slide->min_travel
+        << " % of speed x time";
+    if (m.top_displacement) out << "; resting box jitter " << *m.top_displacement << " m";
+    out << '\n';
+    for (const SliderFigures& s : m.slide->sliders) {
+      out << "    " << s.body << " on " << s.ground << (s.rolling ? " (rolling)" : "")
+          << ": |vy| " << s.max_vertical_speed << " m/s, |w| " << s.max_angular_speed
+          << " rad/s, travel " << 100 * s.travel << " %\n";
+    }
+  }
   if (m.skip_config && m.skips) {
     out << "  skips " << skip_argument(*m.skip_config) << ": of "
         << m.plugin_evaluations.value_or(0) << " evaluations, skipped";

@@ -81,6 +81,7 @@ class Charts {
     chart("time_vs_error", kTerminal, scatter.str());
 
     if (!run_.in_world.empty()) in_world_chart();
+    if (!run_.slide.empty()) slide_chart();
     if (!run_.paper) return;
     dir_.write("paper_figure7.dat", [&](std::ostream& o) { write_figure7_data(run_, o, ' '); });
     std::ostringstream fig;
@@ -142,6 +143,49 @@ class Charts {
     }
     bars << "unset multiplot\n";
     chart("inworld", "svg size 1000,760 dynamic font 'sans,11' background '#ffffff'", bars.str());
+  }
+
+  // The sliders' paths (height above their start against distance along x), one panel per
+  // runner on one height scale: a ghost collision is a hop and a path cut short.
+  void slide_chart() {
+    double low = 0, high = 0;
+    dir_.write("slide_paths.dat", [&](std::ostream& o) {
+      for (const SlideRun& r : run_.slide) {
+        for (const SliderPath& p : r.paths) {
+          o << "# " << r.metrics.backend << ": " << p.body << " on " << p.ground
+            << ": x height\n";
+          for (std::size_t i = 0; i < p.x.size(); ++i) {
+            o << fmt("%.6g", p.x[i]) << ' ' << fmt("%.6g", p.height[i]) << '\n';
+            low = std::min(low, p.height[i]);
+            high = std::max(high, p.height[i]);
+          }
+          o << "\n\n";
+        }
+      }
+    });
+    const std::size_t panels = run_.slide.size();
+    std::ostringstream plot;
+    plot << "set multiplot layout " << panels << ",1 title 'Scene slide: each slider''s height "
+            "above its start against the distance it travelled (one panel per runner)'\n"
+         << "set grid\nset key outside right top font ',9'\nset ylabel 'height (m)'\n"
+         << "set yrange [" << fmt("%.4g", low - 0.01) << ':' << fmt("%.4g", high + 0.01) << "]\n"
+         << "set xrange [-1:*]\n";
+    int index = 0;
+    for (const SlideRun& r : run_.slide) {
+      plot << "set title '" << r.metrics.backend << "'\n"
+           << (&r == &run_.slide.back() ? "set xlabel 'distance along x (m)'\n" : "") << "plot ";
+      for (std::size_t k = 0; k < r.paths.size(); ++k, ++index) {
+        plot << (k ? ", " : "") << dir_.quoted("slide_paths.dat") << " index " << index
+             << " using 1:2 with lines lw 1.5 title '" << r.paths[k].body << " on "
+             << r.paths[k].ground << "'";
+      }
+      plot << '\n';
+    }
+    plot << "unset multiplot\n";
+    chart("slide_paths",
+          "svg size 1000," + std::to_string(120 + 230 * panels) +
+              " dynamic font 'sans,11' background '#ffffff'",
+          plot.str());
   }
 
  private:

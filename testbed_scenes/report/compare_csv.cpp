@@ -97,5 +97,23 @@ void write_paper_methods_csv(const CompareRun& run, std::ostream& o) {
   }
 }
 
+// One row per runner and slider; the resting box's jitter is the runner's, repeated on its rows.
+void write_slide_csv(const CompareRun& run, std::ostream& o) {
+  o << "runner,body,ground,rolling,steps,internal_edges,max_vertical_speed,max_angular_speed,"
+       "travel,resting_jitter\n";
+  for (const SlideRun& r : run.slide) {
+    const SceneMetrics& m = r.metrics;
+    if (!m.slide) continue;
+    for (const SliderFigures& f : m.slide->sliders) {
+      o << m.backend << ',' << f.body << ',' << f.ground << ',' << (f.rolling ? "true" : "false")
+        << ',' << m.steps << ','
+        << (m.backend == box2d_own ? "" : run.options.skips.internal_edges ? "true" : "false")
+        << ',' << fmt("%.6g", f.max_vertical_speed) << ',' << fmt("%.6g", f.max_angular_speed)
+        << ',' << fmt("%.6g", f.travel) << ','
+        << (m.top_displacement ? fmt("%.6g", *m.top_displacement) : "") << '\n';
+    }
+  }
+}
+
 }  // namespace detail
 }  // namespace dyop::report

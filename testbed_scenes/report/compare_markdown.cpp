@@ -71,6 +71,7 @@ class Markdown {
     image(o, "time_per_method.svg", "narrow-phase time per pair, by scene and backend");
     image(o, "time_vs_error.svg", "time against largest depth error");
     if (!run_.in_world.empty()) in_world_section(o);
+    if (!run_.slide.empty()) slide_section(o);
     if (!run_.skips.empty()) skips_section(o);
 
     o << "## Scenes\n\n| scene | what | steps | bodies | triangle fixtures | final state (dyop) |\n"
@@ -93,8 +94,10 @@ class Markdown {
       << (run_.skips.empty()
               ? ""
               : "`skips.csv` (every run of the skip section against its `none` run), ")
+      << (run_.slide.empty() ? "" : "`slide.csv` (every slider under every runner), ")
       << (run_.paper ? "`paper_figure7.csv`, `paper_methods.csv`, " : "")
-      << "the charts' gnuplot scripts (`*.gp`) and data (`*.dat`), `scene_*.svg`.\n";
+      << "the charts' gnuplot scripts (`*.gp`) and data (`*.dat`), `scene_*.svg`"
+      << (run_.slide.empty() ? "" : ", `slide_*.svg`") << ".\n";
   }
 
   void in_world_section(std::ostream& o) const {
@@ -116,6 +119,42 @@ class Markdown {
     write_in_world_table(run_.in_world, o);
     o << '\n';
     image(o, "inworld.svg", "narrow-phase and step time against Box2D's own contact");
+  }
+
+  void slide_section(std::ostream& o) const {
+    o << "## Sliding over triangulated grounds (scene `slide`)\n\n"
+      << "Flat grounds whose top is made of triangle fixtures of one static body have internal "
+         "edges (shared by two of its triangles); Box2D collides each fixture alone and bodies "
+         "sliding over them trip (ghost collisions). One lane per slider: a frictionless box of "
+         "two triangles launched at 6 m/s on a one-piece ground (two large triangles: what a "
+         "glide is), on 1 m and 0.25 m square cells split along a diagonal and on 0.25 m cells "
+         "split in 4 around their centre (fan); a frictionless L of six triangles at 6 m/s on "
+         "the 0.25 m grounds; a 16-sided wheel (friction 0.6) rolling at 1.8 m/s on the "
+         "one-piece ground and on 0.25 m diagonal cells (a polygon loses speed at each vertex: "
+         "its one-piece travel is its yardstick); a box (friction 0.6) resting across a junction "
+         "of two 1 m cells. Same seed and steps for every runner; `"
+      << box2d_own << "` is Box2D's own contact (the plug-in not installed); the plug-in's "
+      << "backends ran with `Config::internal_edges` "
+      << (run_.options.skips.internal_edges ? "**on**" : "**off**")
+      << " (the rule that never pushes along an internal edge).\n\n"
+      << "- **vertical speed**, **angular speed**: largest |v_y| and |ω| over the run of the "
+         "sliding (not rolling) bodies (a glide: 0).\n"
+      << "- **travel**: distance along x over launch speed × time (a frictionless glide: "
+         "100 %); **smallest travel**: over the sliding bodies.\n"
+      << "- **resting box jitter**: its largest displacement from where it was after the first "
+         "second (m).\n\n";
+    write_slide_tables(run_.slide, o);
+    o << '\n';
+    image(o, "slide_paths.svg", "each slider's height against distance travelled, per runner");
+    o << "Final states side by side (lanes top to bottom in the order of the table above):\n\n|";
+    for (const SlideRun& r : run_.slide) o << ' ' << r.metrics.backend << " |";
+    o << "\n|";
+    for (std::size_t i = 0; i < run_.slide.size(); ++i) o << "---|";
+    o << "\n|";
+    for (const SlideRun& r : run_.slide) {
+      o << " ![slide, " << r.metrics.backend << "](slide_" << r.metrics.backend << ".svg) |";
+    }
+    o << "\n\n";
   }
 
   void skips_section(std::ostream& o) const {

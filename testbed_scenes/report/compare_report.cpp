@@ -46,6 +46,13 @@ std::vector<Problem> write_report(const scenes::CompareRun& run) {
     dir.write("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
               [&](std::ostream& o) { scenes::write_svg(snapshot.second, o); });
   }
+  if (!run.slide.empty()) {
+    dir.write("slide.csv", [&](std::ostream& o) { detail::write_slide_csv(run, o); });
+  }
+  for (const scenes::SlideRun& r : run.slide) {
+    dir.write("slide_" + r.metrics.backend + ".svg",
+              [&](std::ostream& o) { scenes::write_svg(r.final_state, o); });
+  }
   detail::draw_charts(files);
   dir.write("report.md", [&](std::ostream& o) { detail::write_markdown(files, o); });
   return dir.problems();

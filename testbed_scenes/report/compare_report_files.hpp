@@ -26,6 +26,7 @@ void write_compare_csv(const CompareRun& run, std::ostream& o);
 void write_skips_csv(const CompareRun& run, std::ostream& o);
 void write_figure7_data(const CompareRun& run, std::ostream& o, char sep);
 void write_paper_methods_csv(const CompareRun& run, std::ostream& o);
+void write_slide_csv(const CompareRun& run, std::ostream& o);
 
 // compare_charts.cpp: every chart (gnuplot) and its data file; failures become problems.
 void draw_charts(ReportFiles& files);

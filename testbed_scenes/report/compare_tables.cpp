@@ -185,4 +185,34 @@ void write_in_world_table(const std::vector<InWorldRatio>& rows, std::ostream& o
   }
 }
 
+void write_slide_tables(const std::vector<scenes::SlideRun>& runs, std::ostream& out) {
+  auto percent = [](double fraction) { return fmt("%.1f", 100 * fraction) + " %"; };
+  out << "| runner | largest vertical speed (m/s) | largest angular speed (rad/s) | smallest "
+         "travel | resting box jitter (m) |\n|---|--:|--:|--:|--:|\n";
+  for (const scenes::SlideRun& r : runs) {
+    const scenes::SceneMetrics& m = r.metrics;
+    if (!m.slide) continue;
+    out << "| " << m.backend << " | " << fmt("%.4f", m.slide->max_vertical_speed) << " | "
+        << fmt("%.4f", m.slide->max_angular_speed) << " | " << percent(m.slide->min_travel)
+        << " | " << (m.top_displacement ? metres(*m.top_displacement) : "n/a") << " |\n";
+  }
+  if (runs.empty() || !runs.front().metrics.slide) return;
+  out << "\n| slider |";
+  for (const scenes::SlideRun& r : runs) out << ' ' << r.metrics.backend << " |";
+  out << "\n|---|";
+  for (std::size_t i = 0; i < runs.size(); ++i) out << "---|";
+  out << '\n';
+  const std::vector<scenes::SliderFigures>& sliders = runs.front().metrics.slide->sliders;
+  for (std::size_t k = 0; k < sliders.size(); ++k) {
+    out << "| " << sliders[k].body << " on " << sliders[k].ground
+        << (sliders[k].rolling ? " (rolling)" : "") << " |";
+    for (const scenes::SlideRun& r : runs) {
+      const scenes::SliderFigures& f = r.metrics.slide->sliders.at(k);
+      out << " vy " << fmt("%.3f", f.max_vertical_speed) << ", ω "
+          << fmt("%.2f", f.max_angular_speed) << ", " << percent(f.travel) << " |";
+    }
+    out << '\n';
+  }
+}
+
 }  // namespace dyop::report

@@ -23,6 +23,10 @@ void write_paper_tables(const scenes::paper::Experiment& e, std::ostream& out);
 /// The in-world table (Markdown): one row per scene and backend.
 void write_in_world_table(const std::vector<scenes::InWorldRatio>& rows, std::ostream& out);
 
+/// The slide section's tables (Markdown): per runner, the sliding bodies' largest speeds, their
+/// smallest travel and the resting box's jitter; then per slider, each runner's figures.
+void write_slide_tables(const std::vector<scenes::SlideRun>& runs, std::ostream& out);
+
 /// The in-world CSV (header and one line per scene and backend).
 void write_in_world_csv(const std::vector<scenes::InWorldRatio>& rows, std::ostream& out);
 

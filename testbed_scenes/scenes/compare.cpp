@@ -113,6 +113,19 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
     }
   }
 
+  for (const SceneInfo* s : scenes) {
+    if (std::string(s->name) != "slide") continue;
+    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
+    for (const Runner& r : slide_runners(options.quick)) {
+      const auto t = Clock::now();
+      run.slide.push_back(run_slide(r, steps, options.seed, options.skips));
+      progress << "[slide] " << name(r) << ", " << steps << " steps, paths recorded: "
+               << fixed(seconds_since(t), 2) << " s (total " << fixed(seconds_since(start), 1)
+               << " s)\n"
+               << std::flush;
+    }
+  }
+
   const int reps = skip_repetitions(options.quick);
   std::vector<const SceneInfo*> skip_runs;
   for (const SceneInfo* s : scenes) {

@@ -3,7 +3,8 @@
 /// The run of all scenes behind `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`
 /// (`program/compare_command.hpp`): every scene under every backend, one table with the scene
 /// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, the
-/// paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every skip off and on).
+/// paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every skip off and on),
+/// and the `slide` scene under Box2D's own contact and the plug-in side by side (`slide_run.hpp`).
 /// The tables are `report/compare_tables.hpp`'s; the report directory (`report.md`, the CSVs
 /// behind it, gnuplot charts and a snapshot of each scene) is written by
 /// `report/compare_report.hpp`.
@@ -19,6 +20,7 @@
 #include "scenes/in_world.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/paper.hpp"
+#include "scenes/slide_run.hpp"
 #include "scenes/svg.hpp"
 
 namespace dyop::scenes {
@@ -92,6 +94,8 @@ struct CompareRun {
   std::vector<SkipMeasurement> skips;
   /// Every Box2D scene selected by `in_world_backends`, against Box2D's own contact.
   std::vector<InWorldRatio> in_world;
+  /// When `slide` was selected: it under each of `slide_runners`, with `CompareOptions::skips`.
+  std::vector<SlideRun> slide;
   std::optional<paper::Experiment> paper;                  ///< when the paper scene was run
   std::vector<std::pair<std::string, Drawing>> snapshots;  ///< per scene: `dyop`'s final state
   double seconds = 0;                                      ///< wall time of the whole run

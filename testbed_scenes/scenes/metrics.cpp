@@ -53,13 +53,31 @@ void Fnv1a::add(double v) {
   bytes(b, sizeof b);
 }
 
+SlideFigures summarize_sliders(std::vector<SliderFigures> sliders) {
+  SlideFigures f;
+  bool first = true;
+  for (const SliderFigures& s : sliders) {
+    if (s.rolling) continue;
+    f.max_vertical_speed = std::max(f.max_vertical_speed, s.max_vertical_speed);
+    f.max_angular_speed = std::max(f.max_angular_speed, s.max_angular_speed);
+    f.min_travel = first ? s.travel : std::min(f.min_travel, s.travel);
+    first = false;
+  }
+  f.sliders = std::move(sliders);
+  return f;
+}
+
 bool all_finite(const SceneMetrics& m) {
-  const double values[] = {
+  std::vector<double> values = {
       m.step_ms_median,  m.step_ms_total,        m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
       m.max_penetration, m.mean_penetration,     m.pd_error_max,
       m.pd_error_mean,   m.kinetic_energy_final, m.top_displacement.value_or(0.0)};
-  return std::all_of(std::begin(values), std::end(values),
-                     [](double v) { return std::isfinite(v); });
+  if (m.slide) {
+    for (const SliderFigures& s : m.slide->sliders) {
+      values.insert(values.end(), {s.max_vertical_speed, s.max_angular_speed, s.travel});
+    }
+  }
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
 
 double median(std::vector<double> v) {

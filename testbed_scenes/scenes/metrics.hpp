@@ -18,6 +18,37 @@
 
 namespace dyop::scenes {
 
+/// One body of the `slide` scene launched along +x over a flat ground, measured over the whole
+/// run (from step 1).
+struct SliderFigures {
+  /// "box" (2 triangle fixtures), "L" (6), "wheel" (16 fanned from its centre)
+  std::string body;
+  /// Its ground's top: "one-piece" (two large triangles), "diagonal-1m", "diagonal-0.25m" (square
+  /// cells split along a diagonal), "fan-0.25m" (cells split in 4 around their centre).
+  std::string ground;
+  /// Rolls with friction (the wheel: its centre rises and falls from vertex to vertex by
+  /// geometry); false: slides frictionless, expected to glide level.
+  bool rolling = false;
+  double max_vertical_speed = 0;  ///< largest |v_y| of its centre of mass (m/s)
+  double max_angular_speed = 0;   ///< largest |ω| (rad/s)
+  /// Distance travelled along x over launch speed × time run (a fraction; 1: a frictionless
+  /// glide; below 0 when a trip threw it back).
+  double travel = 0;
+};
+
+/// The `slide` scene's figures. Its resting box (a box at rest across a junction of two cells) is
+/// the scene's watched body: its jitter is `SceneMetrics::top_displacement`.
+struct SlideFigures {
+  /// Largest |v_y| over the sliding (not rolling) bodies (m/s): 0 for a glide.
+  double max_vertical_speed = 0;
+  double max_angular_speed = 0;  ///< largest |ω| over the same bodies (rad/s): 0 for a glide
+  double min_travel = 0;         ///< smallest `travel` over the same bodies (1: a glide)
+  std::vector<SliderFigures> sliders;  ///< every slider, rolling ones included
+};
+
+/// `sliders` with their sliding ones' largest speeds and smallest travel.
+SlideFigures summarize_sliders(std::vector<SliderFigures> sliders);
+
 /// The figures of one scene run under one backend.
 struct SceneMetrics {
   std::string scene;       ///< scene name
@@ -72,9 +103,12 @@ struct SceneMetrics {
   std::uint64_t invalid = 0;        ///< evaluated pairs the backend answered `Invalid`
   double kinetic_energy_final = 0;  ///< Σ ½mv² + ½Iω² of the moving bodies after the last step (J)
   /// Scenes that should stand (pyramids, stacks): largest distance of a top body from where it
-  /// was after the first second (`settle_steps`), over the rest of the run (m). None for the
-  /// other scenes and for runs of less than a second.
+  /// was after the first second (`settle_steps`), over the rest of the run (m); `slide`: the
+  /// resting box's jitter likewise. None for the other scenes and for runs of less than a
+  /// second.
   std::optional<double> top_displacement;
+  /// Scene `slide`: its sliders' figures. None for the other scenes.
+  std::optional<SlideFigures> slide;
   bool nan_detected = false;  ///< a non-finite body state or figure appeared
   std::uint64_t hash = 0;     ///< FNV-1a of the final body states: equal seeds, equal hashes
 };

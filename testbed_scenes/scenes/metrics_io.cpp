@@ -42,6 +42,33 @@ Json skips(const std::optional<std::array<std::uint64_t, box2d::skip_count>>& co
   return j;
 }
 
+Json slide(const std::optional<SlideFigures>& f) {
+  if (!f) return Json(nullptr);
+  Json j;
+  j["max_vertical_speed"] = number(f->max_vertical_speed);
+  j["max_angular_speed"] = number(f->max_angular_speed);
+  j["min_travel"] = number(f->min_travel);
+  Json sliders = Json::array();
+  for (const SliderFigures& s : f->sliders) {
+    Json one;
+    one["body"] = s.body;
+    one["ground"] = s.ground;
+    one["rolling"] = s.rolling;
+    one["max_vertical_speed"] = number(s.max_vertical_speed);
+    one["max_angular_speed"] = number(s.max_angular_speed);
+    one["travel"] = number(s.travel);
+    sliders.push_back(one);
+  }
+  j["sliders"] = sliders;
+  return j;
+}
+
+// A list of records (an array of objects, such as `slide.sliders`) has no CSV column: it is in
+// the JSON, and `dyop compare` writes it in a CSV of its own.
+bool json_only(const Json& value) {
+  return value.is_array() && !value.empty() && value.front().is_object();
+}
+
 Json to_json(const SceneMetrics& m) {
   Json j;
   j["scene"] = m.scene;
@@ -68,6 +95,7 @@ Json to_json(const SceneMetrics& m) {
   j["invalid"] = m.invalid;
   j["kinetic_energy_final"] = number(m.kinetic_energy_final);
   j["top_displacement"] = optional(m.top_displacement);
+  j["slide"] = slide(m.slide);
   j["nan_detected"] = m.nan_detected || !all_finite(m);  // a null above means a NaN
   j["hash"] = hash_hex(m.hash);
   return j;
@@ -79,6 +107,8 @@ const Json& full_record() {
     SceneMetrics m;
     m.skip_config.emplace();
     m.skips.emplace();
+    m.slide.emplace();
+    m.slide->sliders.emplace_back();
     return to_json(m);
   }();
   return j;
@@ -122,7 +152,9 @@ const std::vector<std::string>& csv_columns() {
         out.push_back(item.key());
         continue;
       }
-      for (const auto& sub : item.value().items()) out.push_back(item.key() + "." + sub.key());
+      for (const auto& sub : item.value().items()) {
+        if (!json_only(sub.value())) out.push_back(item.key() + "." + sub.key());
+      }
     }
     return out;
   }();
@@ -152,7 +184,7 @@ std::string csv_row(const SceneMetrics& m) {
       continue;
     }
     for (const auto& sub : item.value().items()) {
-      cell(value.is_null() ? Json(nullptr) : value.at(sub.key()));
+      if (!json_only(sub.value())) cell(value.is_null() ? Json(nullptr) : value.at(sub.key()));
     }
   }
   return row;

@@ -10,6 +10,13 @@
 /// (`{"bounds": n, "warm-axis": n}`); both are `null` for `paper`. In CSV an object
 /// becomes one column per key (`skips.bounds`, ...) and an array one cell, its names separated by
 /// spaces.
+///
+/// The `slide` scene adds `slide`: its sliding bodies' largest vertical and angular speeds
+/// (`max_vertical_speed` m/s, `max_angular_speed` rad/s), their smallest travel fraction
+/// (`min_travel`), and `sliders`, one object per slider (`body`, `ground`, `rolling`,
+/// `max_vertical_speed`, `max_angular_speed`, `travel`); `null` for the other scenes. In CSV
+/// the three figures are columns (`slide.max_vertical_speed`, ...); `sliders` is not (a list of
+/// records: `dyop compare` writes it in `slide.csv`).
 
 #include <iosfwd>
 #include <string>

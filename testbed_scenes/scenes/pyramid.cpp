@@ -25,7 +25,7 @@ WorldBuild build_pyramid(World& world, workloads::Random& rng) {
       top = add_split_box(world, b2Vec2(x, kHalf + b2_polygonRadius + row * pitch), kHalf);
     }
   }
-  return {{top}};
+  return {{top}, {}};
 }
 
 WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
@@ -60,7 +60,7 @@ WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
       }
     }
   }
-  return {{top}};
+  return {{top}, {}};
 }
 
 }  // namespace dyop::scenes::detail

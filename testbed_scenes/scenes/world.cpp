@@ -76,10 +76,10 @@ b2Body* add_triangle_bin(World& world, float half_width, float height) {
   return bin;
 }
 
-b2Body* add_split_box(World& world, const b2Vec2& center, float half) {
+b2Body* add_split_box(World& world, const b2Vec2& center, float half, const Material& material) {
   b2Body* body = add_body(world, b2_dynamicBody, center);
-  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, -half), b2Vec2(half, half));
-  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, half), b2Vec2(-half, half));
+  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, -half), b2Vec2(half, half), material);
+  add_triangle(body, b2Vec2(-half, -half), b2Vec2(half, half), b2Vec2(-half, half), material);
   return body;
 }
 

@@ -78,7 +78,8 @@ b2Body* add_triangle_ground(World& world, float half_width);
 b2Body* add_triangle_bin(World& world, float half_width, float height);
 
 /// A dynamic square of side 2·half made of two triangle fixtures split along its diagonal.
-b2Body* add_split_box(World& world, const b2Vec2& center, float half);
+b2Body* add_split_box(World& world, const b2Vec2& center, float half,
+                      const Material& material = {});
 
 /// A dynamic L (two 2 × 1 arms meeting at the body origin), four triangle fixtures.
 b2Body* add_l_shape(World& world, const b2Vec2& position, float angle);

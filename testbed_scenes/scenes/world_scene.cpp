@@ -41,6 +41,7 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
       world_(std::make_unique<World>()) {
   workloads::Random rng(seed);
   build_ = build(*world_, rng);
+  for (const Slider& s : build_.sliders) slider_start_x_.push_back(s.body->GetPosition().x);
   // Box2D's own contact answers as `b2CollidePolygons`, which is what the probe checks for `box2d`.
   probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D), world_->get());
 }
@@ -71,6 +72,13 @@ void WorldScene::step() {
   for (std::size_t i = 0; i < watched_start_.size(); ++i) {
     const double d = (build_.watched[i]->GetPosition() - watched_start_[i]).Length();
     top_displacement_ = std::max(top_displacement_, d);
+  }
+  for (Slider& s : build_.sliders) {
+    SliderFigures& f = s.figures;
+    f.max_vertical_speed =
+        std::max(f.max_vertical_speed, double(std::abs(s.body->GetLinearVelocity().y)));
+    f.max_angular_speed =
+        std::max(f.max_angular_speed, double(std::abs(s.body->GetAngularVelocity())));
   }
 }
 
@@ -119,6 +127,17 @@ SceneMetrics WorldScene::metrics() const {
       updates_.contacts > 0 ? collide_ms_ * 1e6 / static_cast<double>(updates_.contacts) : 0;
   add_accuracy(errors_, penetration_, m);
   if (!watched_start_.empty()) m.top_displacement = top_displacement_;
+  if (!build_.sliders.empty()) {
+    std::vector<SliderFigures> sliders;
+    const double seconds = steps_ * double(time_step);
+    for (std::size_t i = 0; i < build_.sliders.size(); ++i) {
+      const Slider& s = build_.sliders[i];
+      sliders.push_back(s.figures);
+      const double travelled = s.body->GetPosition().x - slider_start_x_[i];
+      sliders.back().travel = steps_ > 0 ? travelled / (s.speed * seconds) : 0;
+    }
+    m.slide = summarize_sliders(std::move(sliders));
+  }
   m.nan_detected = nan_ || !all_finite(m);
   return m;
 }

@@ -7,7 +7,7 @@
 /// step will update); timed: `World::step` (steady_clock around `b2World::Step`) and, inside it,
 /// Box2D's own `GetProfile().collide`; untimed again: the exact penetration of touching triangle
 /// pairs, non-finite states, the top bodies' displacement from where they were after
-/// `settle_steps`. Step 1 is left out of the narrow-phase
+/// `settle_steps`, the sliders' largest speeds. Step 1 is left out of the narrow-phase
 /// figures: its contacts are created inside `Step`, so the probe cannot see them beforehand.
 
 #include <cstdint>
@@ -23,11 +23,21 @@
 
 namespace dyop::scenes {
 
+/// A body launched along +x (scene `slide`), measured while it goes.
+struct Slider {
+  b2Body* body = nullptr;
+  double speed = 0;  ///< launch speed along +x (m/s): its travel's yardstick
+  /// What it is and where (`body`, `ground`, `rolling`); the scene fills in the figures.
+  SliderFigures figures;
+};
+
 /// What a builder says about the world it built.
 struct WorldBuild {
-  /// Bodies that should not move much if the structure stands (top of a pyramid or a stack);
-  /// empty when the scene is not meant to stand.
+  /// Bodies that should not move much if the structure stands (top of a pyramid or a stack, the
+  /// resting box of `slide`); empty when the scene is not meant to stand.
   std::vector<b2Body*> watched;
+  /// Bodies launched along +x (`slide`): the scene reports `SceneMetrics::slide` when there are.
+  std::vector<Slider> sliders;
 };
 
 /// Steps a structure is given to settle before its top bodies are watched (1 s): a pyramid of
@@ -53,6 +63,8 @@ class WorldScene : public Scene {
 
   /// The world, for tests that look inside.
   const World& world() const { return *world_; }
+  /// What the builder said (the watched bodies, the sliders and their figures so far).
+  const WorldBuild& build() const { return build_; }
 
  private:
   // Uninstalls the backend when the scene goes, also when building it threw, so that the next
@@ -72,6 +84,7 @@ class WorldScene : public Scene {
   std::unique_ptr<World> world_;
   WorldBuild build_;
   std::vector<b2Vec2> watched_start_;
+  std::vector<float> slider_start_x_;
   std::unique_ptr<ContactProbe> probe_;
 
   int steps_ = 0;

@@ -65,8 +65,17 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   for (const SceneInfo& s : scene_catalog()) {
     EXPECT_TRUE(std::filesystem::exists(dir / ("scene_" + std::string(s.name) + ".svg"))) << s.name;
   }
+  // The slide section: Box2D's own contact and the two exact backends, 8 sliders each.
+  EXPECT_NE(report.find("## Sliding over triangulated grounds"), std::string::npos);
+  EXPECT_NE(out.str().find("| box2d-own |"), std::string::npos) << "the slide table";
+  const std::string slide = read(dir / "slide.csv");
+  EXPECT_EQ(std::count(slide.begin(), slide.end(), '\n'), 3 * 8 + 1);
+  for (const char* runner : {"box2d-own", "dyop", "sat"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / ("slide_" + std::string(runner) + ".svg"))) << runner;
+  }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
-    for (const char* chart : {"time_per_method.svg", "time_vs_error.svg", "paper_figure7.svg"}) {
+    for (const char* chart : {"time_per_method.svg", "time_vs_error.svg", "paper_figure7.svg",
+                              "slide_paths.svg"}) {
       EXPECT_GT(std::filesystem::file_size(dir / chart), 1000u) << chart;
       EXPECT_NE(report.find(std::string("](") + chart + ")"), std::string::npos) << chart;
     }
