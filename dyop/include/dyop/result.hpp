@@ -85,16 +85,18 @@ struct Query {
   /// Edges that are internal to a triangulated body (shared with another triangle of the same
   /// body), whose normals are therefore not directions the body's outline allows: bit i is A's
   /// edge i, bit 3 + i B's edge i (caller's order). Honoured by the exact methods (`dyop`,
-  /// `sat`; the other methods ignore it: `MethodInfo::allowed_directions`): such an edge is
-  /// never the reference face, nor the axis of `depth` and `normal`. The status (and, for pairs
-  /// apart, `separation` and `normal`) is still decided over all six axes, so a pair separated
-  /// only along an internal edge stays apart; and a manifold is empty when an axis that is not
-  /// allowed separates the pair by more than `margin`. Penetrating or touching: `depth`,
-  /// `normal` and the reference face are the least over the allowed axes (the exact depth of
-  /// the pair along the directions the outline allows). No axis allowed at all: the status,
-  /// `depth` and `normal` are the unrestricted answer and the manifold is empty (another pair
-  /// of the two bodies carries the contact). 0 (the default): every axis allowed, the plain
-  /// answer, bit for bit.
+  /// `sat`; the other methods ignore it: `MethodInfo::allowed_directions`). The status (and, for
+  /// pairs apart, `separation` and `normal`) is still decided over all six axes, so a pair
+  /// separated only along an internal edge stays apart, and a pair apart beyond `margin` is
+  /// answered as without masks. Otherwise, when the masks allow the pair's least axis and its
+  /// reference face, the answer is the plain one; when not, `depth`, `normal` and the reference
+  /// face come from the least *usable* axis: allowed (its edge not internal, its deepest vertex
+  /// not in `flat_vertices`) and reached (the other triangle touches that edge, within `margin`
+  /// and the touching band): the exact depth of the pair along the directions the outline allows
+  /// there. No usable axis: the status, `depth` and `normal` are the unrestricted answer and the
+  /// manifold is empty (another pair of the two bodies carries the contact). One triangle reaching
+  /// no edge of the other (held whole by it): allowed axes suffice. 0 (the default): every axis
+  /// allowed, the plain answer, bit for bit.
   std::uint8_t inactive_edges = 0;
   /// Vertices at which no edge axis of the other triangle is allowed (bit i A's vertex i, bit
   /// 3 + i B's, caller's order): an edge axis of the other triangle whose deepest vertex is one

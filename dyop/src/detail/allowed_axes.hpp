@@ -30,7 +30,7 @@ struct AllowedAxes {
 
   bool any() const { return best_a >= 0 || best_b >= 0; }
   // The least usable axis (A's on ties); `any()` must hold.
-  int least_allowed() const {
+  int least_usable_axis() const {
     if (best_a < 0) return best_b;
     if (best_b < 0) return best_a;
     return overlap[best_b] < overlap[best_a] ? best_b : best_a;
@@ -88,12 +88,6 @@ bool edge_touched(const PairFrame<T>& f, int k, T tol) {
 template <class T>
 T edge_reach(const PairFrame<T>& f, const Query<T>& q) {
   return q.margin + touching_band(f);
-}
-
-// Axis k is one the pair may be answered on: allowed by the masks and its edge reached.
-template <class T>
-bool axis_usable(const PairFrame<T>& f, const Query<T>& q, int k) {
-  return axis_allowed(f, q, k) && edge_touched(f, k, edge_reach(f, q));
 }
 
 // One triangle's least usable axis (`first`: 0 for A's, 3 for B's), trying its axes from the

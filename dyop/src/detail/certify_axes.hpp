@@ -51,16 +51,17 @@ template <class T>
   }
 }
 
-// The answer when some axes are not allowed (`Query::inactive_edges`, `flat_vertices`): the
-// status over all six, the depth, normal and reference face over the allowed ones.
+// The answer when the masks refuse the plain one (`Query::inactive_edges`, `flat_vertices`): the
+// status over all six axes, the depth, normal and reference face over the usable ones.
 template <class T, class Find>
 [[gnu::noinline]] Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
-                               const std::array<T, 6>& overlap, const Find& find) {
+                                                 const std::array<T, 6>& overlap,
+                                                 const Find& find) {
   const AllowedAxes<T> allowed = allowed_axes(f, q, overlap);
   Result<T> r;
   if (!answer_if_apart(f, q, overlap, allowed.least, find, r)) {
-    answer_on_axis(f, q.level, overlap, allowed.any() ? allowed.least_allowed() : allowed.least,
-                   r);
+    const int axis = allowed.any() ? allowed.least_usable_axis() : allowed.least;
+    answer_on_axis(f, q.level, overlap, axis, r);
   }
   if (q.level != Level::Manifold) return r;
   // No usable axis: no contact from this pair (another pair of the two bodies carries it), and
