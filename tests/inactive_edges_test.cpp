@@ -8,8 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
 
 #include "dyop/method.hpp"
+#include "exact_reference/exact_reference.hpp"
+#include "workloads/raw_pair.hpp"
 #include "support/make_triangle.hpp"
 #include "support/scalars.hpp"
 
@@ -142,6 +147,46 @@ TYPED_TEST(InactiveEdges, AnOutlineEdgeTheOtherTriangleDoesNotReachIsNoAxis) {
     EXPECT_LT(r.depth, T(0.5));  // never the 1.01 m push through the bottom
     EXPECT_EQ(r.manifold.point_count, 0);
   });
+}
+
+// The depth against the exact rational reference: in each constructed case above, the least
+// exact overlap over the edges the rule may use there (listed by hand from the cases' comments).
+TYPED_TEST(InactiveEdges, DepthIsTheLeastExactOverlapAlongTheUsableEdges) {
+  using T = TypeParam;
+  struct Usable {
+    bool of_a;
+    int edge;
+  };
+  struct Case {
+    const char* what;
+    workloads::RawPair pair;
+    std::uint8_t edges;
+    std::uint8_t vertices;
+    std::vector<Usable> usable;
+  };
+  const std::array<Vec2<double>, 3> ground_pts = {{{1, 0}, {1, -1}, {2, 0}}};
+  const Case cases[] = {
+      {"vertex past a flat junction", {ground_pts, {{{1.02, -0.05}, {1.02, 1}, {0, 1}}}},
+       ground_edges, ground_vertices, {{true, 2}}},
+      {"straddling an internal edge", {ground_pts, {{{0.5, -0.6}, {1.5, -0.6}, {1, 0.5}}}},
+       ground_edges, ground_vertices, {{true, 2}, {false, 1}, {false, 2}}},
+      {"deep, only the outline", {ground_pts, {{{1.1, -0.5}, {1.3, -0.5}, {1.2, -0.3}}}},
+       ground_edges | 0b111000, ground_vertices, {{true, 2}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    double exact = std::numeric_limits<double>::infinity();
+    for (const Usable& u : c.usable) {
+      exact = std::min(exact, workloads::exact_edge_overlap(c.pair, u.of_a, u.edge));
+    }
+    const auto built = workloads::build<T>(c.pair);
+    ASSERT_TRUE(built.a.ok() && built.b.ok());
+    for_exact_methods<T>([&](Method m) {
+      const Result<T> r = penetrate(m, built.a.triangle, built.b.triangle,
+                                    query<T>(Level::Manifold, c.edges, c.vertices));
+      EXPECT_NEAR(double(r.depth), exact, 10 * double(tol<T>()));
+    });
+  }
 }
 
 // Apart by 0.05 along the internal edge only (B left of x = 1, level with the top): the status

@@ -100,4 +100,27 @@ ExactAnswer exact_separation(const RawPair& p) {
   return out;
 }
 
+double exact_edge_overlap(const RawPair& p, bool of_a, int edge) {
+  const std::array<Vec2<double>, 3>& own_v = of_a ? p.a : p.b;
+  const std::array<Vec2<double>, 3>& other_v = of_a ? p.b : p.a;
+  std::array<QVec, 3> own;
+  std::array<QVec, 3> other;
+  for (int i = 0; i < 3; ++i) {
+    own[i] = {Q(own_v[i].x()), Q(own_v[i].y())};
+    other[i] = {Q(other_v[i].x()), Q(other_v[i].y())};
+  }
+  const QVec e = sub(own[(edge + 1) % 3], own[edge]);
+  // Outward: to the right of the edge for counter-clockwise vertices, to the left otherwise.
+  const bool ccw = sgn(cross(sub(own[1], own[0]), sub(own[2], own[0]))) > 0;
+  const QVec n = ccw ? QVec{e.y, -e.x} : QVec{-e.y, e.x};
+  Q least = dot(n, other[0]);
+  for (int k = 1; k < 3; ++k) {
+    const Q d = dot(n, other[k]);
+    if (d < least) least = d;
+  }
+  mpf_class value(dot(n, own[edge]) - least, kBits);
+  value /= sqrt(mpf_class(dot(e, e), kBits));
+  return value.get_d();
+}
+
 }  // namespace dyop::workloads

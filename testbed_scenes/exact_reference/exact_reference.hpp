@@ -17,4 +17,11 @@ struct ExactAnswer {
 
 ExactAnswer exact_separation(const RawPair& p);
 
+/// The exact overlap of `p` along the outward normal of one edge (of A when `of_a`, else of B;
+/// edge i runs from vertex i to vertex i + 1 in the caller's order): how far the other triangle
+/// reaches past that edge's line, the translation along the normal that separates the pair
+/// (metres; negative: apart along it). The depth along a set of allowed directions is the least
+/// of these over the allowed edges.
+double exact_edge_overlap(const RawPair& p, bool of_a, int edge);
+
 }  // namespace dyop::workloads
