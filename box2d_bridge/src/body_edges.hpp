@@ -1,8 +1,8 @@
 #pragma once
 // Internal: which edges of a body's triangle fixtures are internal to the body (shared with
-// another of its triangles) and which of their vertices sit where the outline is flat or reflex
-// (`Config::internal_edges`). Kept per body in a side table outside the contacts, built when a
-// contact of the body first asks and rebuilt when the body's fixtures have changed.
+// another of its triangles), and which of their vertices are closed: no other triangle may push
+// there (`Config::internal_edges`). Kept per body in a side table outside the contacts, built
+// when a contact of the body first asks and rebuilt when the body's fixtures have changed.
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
@@ -14,7 +14,7 @@ namespace dyop::box2d::detail {
 // One triangle's masks in Box2D's vertex order (edge i from m_vertices[i] to [i + 1]).
 struct TriangleEdges {
   std::uint8_t inactive_edges = 0;  // bit i: edge i shared with another triangle of the body
-  std::uint8_t flat_vertices = 0;   // bit i: vertex i flat or reflex on the outline (see Query)
+  std::uint8_t flat_vertices = 0;   // bit i: vertex i closed (see Query::flat_vertices)
 };
 
 // The masks of `fixture`'s triangle (zero for any other shape), from its body's index, built or
