@@ -1,5 +1,3 @@
-#include "backend.hpp"
-#include "body_edges.hpp"
 #include "installation.hpp"
 #include "triangle_contact.hpp"
 
@@ -11,7 +9,7 @@ InstallResult install(Backend backend, const Config& config) {
             "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
   }
   detail::Installation& now = detail::installation();
-  if (now.backend == backend && now.config == config) {
+  if (now.setting.backend == backend && now.setting.config == config) {
     return {InstallStatus::Done, "already installed"};
   }
   if (!now.saved) {
@@ -19,28 +17,31 @@ InstallResult install(Backend backend, const Config& config) {
     now.saved = true;
   }
   // Contacts already made, ours and Box2D's own, stay valid under any registration: see
-  // TriangleContact::destroy. Ours read `now` at every evaluation, so they switch at the next step.
+  // TriangleContact::destroy. Ours read the setting at every evaluation, so they switch at the
+  // next step, and take their internal-edge masks again under the new epoch.
   detail::register_polygon_contact({&detail::TriangleContact::create,
                                     &detail::TriangleContact::destroy});
-  now.backend = backend;
-  now.config = config;
-  now.find_internal_edges = config.internal_edges && info(backend).allowed_directions;
+  const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
+  now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
   reset_stats();
   return {InstallStatus::Done, "installed"};
 }
 
 InstallResult uninstall() {
   detail::Installation& now = detail::installation();
-  if (!now.backend) return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
+  if (!now.setting.backend) {
+    return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
+  }
   detail::register_polygon_contact(now.box2d_own);
-  now.backend.reset();
-  now.find_internal_edges = false;
-  detail::forget_bodies();
+  // The config and the epoch stay: `installed_config()` is the last install's.
+  now.setting.backend.reset();
+  now.setting.method.reset();
+  now.setting.internal_edges = false;
   return {InstallStatus::Done, "uninstalled: Box2D's own contact is registered again"};
 }
 
-std::optional<Backend> installed() { return detail::installation().backend; }
+std::optional<Backend> installed() { return detail::installation().setting.backend; }
 
-Config installed_config() { return detail::installation().config; }
+Config installed_config() { return detail::installation().setting.config; }
 
 }  // namespace dyop::box2d

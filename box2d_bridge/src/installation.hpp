@@ -1,6 +1,12 @@
 #pragma once
-// Internal: what is installed right now, read by every evaluation of the plug-in's contacts.
+// Internal: what answers the plug-in's pairs, decided once by `install` and read by every
+// evaluation of the plug-in's contacts.
+//
+// Process-wide, as Box2D's contact registry is: written only by `install` and `uninstall`, which
+// must not run while another thread steps a world (see `dyop/box2d.hpp`), so that evaluations on
+// any number of threads only read it.
 
+#include <cstdint>
 #include <optional>
 
 #include "contact_registry.hpp"
@@ -8,14 +14,31 @@
 
 namespace dyop::box2d::detail {
 
-struct Installation {
-  // The backend the plug-in's contacts answer with; nothing: uninstalled, they answer as Box2D's
-  // own contact does (`b2CollidePolygons`).
+// What a pair is evaluated with. Made by `install` (or per call by `collide_polygons`).
+struct Setting {
+  // The backend; nothing: uninstalled, the plug-in's contacts answer as Box2D's own contact.
   std::optional<Backend> backend;
-  Config config;  // the skips of `backend`
-  // `config.internal_edges` and a backend that honours it (`MethodInfo::allowed_directions`):
-  // only then do contacts look for their internal edges.
-  bool find_internal_edges = false;
+  Config config;  // the skips and the internal-edge switch
+  // The library method behind `backend`; nothing for `Backend::Box2D`, which is Box2D's own code.
+  std::optional<Method> method;
+  // The internal-edge rule, decided here once: `config.internal_edges` and a method that honours
+  // the masks (`MethodInfo::internal_edges`). Off: no contact ever looks for its masks.
+  bool internal_edges = false;
+  // Which install this is, counted modulo 255 and never 0: a contact's masks found under another
+  // install are found again (fixtures may have changed while the plug-in was not looking).
+  std::uint8_t epoch = 0;
+
+  Setting() = default;
+  Setting(Backend b, const Config& c, std::uint8_t install_epoch)
+      : backend(b),
+        config(c),
+        method(info(b).entry == Entry::PerPair ? std::optional<Method>(b) : std::nullopt),
+        internal_edges(c.internal_edges && info(b).internal_edges),
+        epoch(install_epoch) {}
+};
+
+struct Installation {
+  Setting setting;
   // What was registered for polygon pairs before the first install: Box2D's own
   // b2PolygonContact (its functions are not exported, so they can only be saved from the
   // registry). Valid once `saved` is true.
@@ -23,8 +46,7 @@ struct Installation {
   bool saved = false;
 };
 
-// The process-wide installation (single-threaded, like Box2D 2.4); inline, as every contact
-// update reads it.
+// The process-wide installation; inline, as every contact update reads it.
 inline Installation current_installation;
 inline Installation& installation() { return current_installation; }
 

@@ -1,9 +1,83 @@
 #include "stats.hpp"
 
+#include <algorithm>
+#include <mutex>
+#include <vector>
+
 namespace dyop::box2d {
+namespace detail {
+namespace {
 
-Stats stats() { return detail::counters(); }
+// Adds `from`'s counts to `to`.
+void add_to(Stats& to, const ThreadCounters& from) {
+  for (int m = 0; m < method_count; ++m) to.triangle_pairs[m] += from.triangle_pairs[m].get();
+  to.polygon_pairs += from.polygon_pairs.get();
+  to.manifolds += from.manifolds.get();
+  to.fallbacks += from.fallbacks.get();
+  for (int s = 0; s < skip_count; ++s) to.skipped[s] += from.skipped[s].get();
+  to.internal_edge_pairs += from.internal_edge_pairs.get();
+}
 
-void reset_stats() { detail::counters() = Stats{}; }
+void clear(ThreadCounters& c) {
+  for (Counter& x : c.triangle_pairs) x.clear();
+  c.polygon_pairs.clear();
+  c.manifolds.clear();
+  c.fallbacks.clear();
+  for (Counter& x : c.skipped) x.clear();
+  c.internal_edge_pairs.clear();
+}
+
+// The blocks of the live threads and the totals of the ended ones. Touched when a thread first
+// counts or ends, and by `stats()` / `reset_stats()`: never by an evaluation.
+struct AllThreads {
+  std::mutex lock;
+  std::vector<ThreadCounters*> live;
+  Stats ended;
+};
+
+AllThreads& all_threads() {
+  static AllThreads all;
+  return all;
+}
+
+}  // namespace
+
+ThreadCounters::ThreadCounters() {
+  AllThreads& all = all_threads();
+  const std::lock_guard<std::mutex> hold(all.lock);
+  all.live.push_back(this);
+}
+
+ThreadCounters::~ThreadCounters() {
+  AllThreads& all = all_threads();
+  const std::lock_guard<std::mutex> hold(all.lock);
+  add_to(all.ended, *this);
+  all.live.erase(std::find(all.live.begin(), all.live.end(), this));
+}
+
+}  // namespace detail
+
+const char* name(Skip s) {
+  switch (s) {
+    case Skip::Bounds: return "bounds";
+    case Skip::WarmAxis: return "warm-axis";
+  }
+  return "unknown";
+}
+
+Stats stats() {
+  detail::AllThreads& all = detail::all_threads();
+  const std::lock_guard<std::mutex> hold(all.lock);
+  Stats sum = all.ended;
+  for (const detail::ThreadCounters* c : all.live) detail::add_to(sum, *c);
+  return sum;
+}
+
+void reset_stats() {
+  detail::AllThreads& all = detail::all_threads();
+  const std::lock_guard<std::mutex> hold(all.lock);
+  all.ended = Stats{};
+  for (detail::ThreadCounters* c : all.live) detail::clear(*c);
+}
 
 }  // namespace dyop::box2d

@@ -7,8 +7,7 @@
 #include <new>
 #include <typeinfo>
 
-#include "body_edges.hpp"
-#include "evaluate_pair.hpp"
+#include "evaluation.hpp"
 #include "installation.hpp"
 
 namespace dyop::box2d::detail {
@@ -19,6 +18,38 @@ namespace {
 constexpr std::size_t box2d_polygon_contact_size = sizeof(b2Contact);
 constexpr std::size_t allocator_class_below = 192;
 constexpr std::size_t allocator_class = 224;
+
+bool is_ours(const b2Contact& c) { return typeid(c) == typeid(TriangleContact); }
+
+// A contact between bodies `p` and `q` made or destroyed between steps (the world unlocked) means
+// a fixture of one of them was added, destroyed, moved, enabled or changed type: the other
+// contacts between the same two bodies find their internal-edge masks again. (Any fixture whose
+// edge a contact's pair could push along is within the skins of it, well inside the broad phase's
+// fattened boxes, so it has a contact of its own with the other body.) The shorter of the two
+// bodies' contact lists is walked: a ground's may be long, a falling body's is short.
+void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
+  const b2ContactEdge* x = p.GetContactList();
+  const b2ContactEdge* y = q.GetContactList();
+  while (x && y) {
+    x = x->next;
+    y = y->next;
+  }
+  const b2Body& walked = x ? q : p;
+  const b2Body& other = x ? p : q;
+  for (const b2ContactEdge* e = walked.GetContactList(); e; e = e->next) {
+    if (e->other == &other && is_ours(*e->contact)) {
+      static_cast<TriangleContact*>(e->contact)->forget_internal_edges();
+    }
+  }
+}
+
+// Between steps, with the rule on: see `forget_internal_edges_between`.
+void fixtures_changed_near(const b2Contact& c) {
+  const b2Body& a = *c.GetFixtureA()->GetBody();
+  if (installation().setting.internal_edges && !a.GetWorld()->IsLocked()) {
+    forget_internal_edges_between(a, *c.GetFixtureB()->GetBody());
+  }
+}
 
 }  // namespace
 
@@ -35,22 +66,18 @@ static_assert(sizeof(TriangleContact) > allocator_class_below &&
 b2Contact* TriangleContact::create(b2Fixture* fixture_a, int32, b2Fixture* fixture_b, int32,
                                    b2BlockAllocator* allocator) {
   void* memory = allocator->Allocate(sizeof(TriangleContact));
-  return new (memory) TriangleContact(fixture_a, fixture_b);
+  b2Contact* contact = new (memory) TriangleContact(fixture_a, fixture_b);
+  fixtures_changed_near(*contact);
+  return contact;
 }
 
 void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
-  if (typeid(*contact) != typeid(TriangleContact)) {
+  fixtures_changed_near(*contact);
+  if (!is_ours(*contact)) {
     // Made by Box2D's own code before an install: its own function frees it. `installation()`
     // saved that function before our destroy could ever be registered.
     installation().box2d_own.destroy(contact, allocator);
     return;
-  }
-  const b2Body& body_a = *contact->GetFixtureA()->GetBody();
-  if (!body_a.GetWorld()->IsLocked()) {
-    // Destroyed between steps: a fixture or a body is going, or a body changed type or was
-    // disabled. The bodies' internal edges are found again when next needed.
-    forget_body(body_a);
-    forget_body(*contact->GetFixtureB()->GetBody());
   }
   static_cast<TriangleContact*>(contact)->~TriangleContact();
   allocator->Free(contact, sizeof(TriangleContact));
@@ -64,22 +91,8 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
   // The registry dispatches only polygon–polygon pairs here.
   const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
   const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
-  const Installation& now = installation();
-  if (!now.backend) {
-    b2CollidePolygons(manifold, &a, xf_a, &b, xf_b);  // uninstalled: as Box2D's own contact
-    return;
-  }
-  if (now.find_internal_edges && memory_.edges_generation != index_generation()) {
-    // Once per contact, the first time the rule applies, and again after a body's fixtures
-    // changed: a world that never needs it never pays for the search (callgrind, rain 150 steps:
-    // 11 M instructions of 175 M in Collide).
-    memory_.edges_generation = index_generation();
-    const TriangleEdges ea = triangle_edges(*m_fixtureA);
-    const TriangleEdges eb = triangle_edges(*m_fixtureB);
-    memory_.inactive_edges = static_cast<std::uint8_t>(ea.inactive_edges | eb.inactive_edges << 3);
-    memory_.flat_vertices = static_cast<std::uint8_t>(ea.flat_vertices | eb.flat_vertices << 3);
-  }
-  evaluate_pair(manifold, *now.backend, now.config, a, xf_a, b, xf_b, memory_);
+  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_,
+           {m_fixtureA, m_fixtureB});
 }
 
 }  // namespace dyop::box2d::detail

@@ -7,11 +7,11 @@
 
 namespace dyop::box2d::detail {
 
-// Box2D's contact for a polygon pair made while the plug-in is installed: `Evaluate` is
-// `evaluate_pair` with whatever is installed at the time (Box2D's own answer once uninstalled).
-// Holds no heap memory (b2World's destructor frees contacts without running their destructors):
-// what the pair remembers between steps is its `ContactMemory`, inside the object. Last step's
-// manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
+// Box2D's contact for a polygon pair made while the plug-in is installed: `Evaluate` is the
+// plug-in's evaluation with whatever is installed at the time (Box2D's own answer once
+// uninstalled). Holds no heap memory (b2World's destructor frees contacts without running their
+// destructors): what the pair remembers between steps is its `ContactMemory`, inside the object.
+// Last step's manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
 class TriangleContact final : public b2Contact {
  public:
   // Box2D's create / destroy functions for the registry (b2ContactCreateFcn / b2ContactDestroyFcn).
@@ -21,6 +21,9 @@ class TriangleContact final : public b2Contact {
   static void destroy(b2Contact* contact, b2BlockAllocator* allocator);
 
   void Evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b) override;
+
+  // Its internal-edge masks are found again when next needed (a fixture near it changed).
+  void forget_internal_edges() { memory_.internal_edges_epoch = 0; }
 
  private:
   TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);

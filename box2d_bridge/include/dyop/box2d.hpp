@@ -24,8 +24,21 @@
 /// - Geometry is computed in A's body frame (B's vertices moved by `b2MulT(xfA, xfB)`), so float
 ///   accuracy is relative to the shapes' size, not to their distance from the world origin.
 ///
-/// Not thread-safe: Box2D's registry is process-wide, and so are `install` and `stats`. Use one
-/// thread for Box2D, as Box2D 2.4 itself requires.
+/// Threads and lifetimes. Box2D 2.4 steps separate worlds on separate threads (one thread per
+/// world at a time; a world may move between threads between steps, as in a pool of
+/// environments), and so does the plug-in:
+/// - Everything the plug-in knows about a world lives in that world's contacts, and is found from
+///   the world's own fixtures and broad phase: no table outside them, so a world's answers depend
+///   on nothing but that world — not on worlds stepped on other threads, nor on worlds deleted
+///   before it (`delete world;` without destroying its bodies is fine, whatever addresses its
+///   allocator hands to the next world). Nothing is kept for a dead world.
+/// - `install` and `uninstall` change Box2D's contact registry, which is process-wide and
+///   unguarded in Box2D itself: call them when no thread is stepping a world, creating or
+///   destroying bodies or fixtures (Box2D reads the registry there). Every other function may run
+///   on any thread at any time.
+/// - `stats()` sums the counts of every thread (each thread counts into its own block, so the
+///   counting never serialises threads); `reset_stats()` and `install` clear them all, and are
+///   exact only while no thread is stepping.
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
@@ -112,14 +125,16 @@ struct Config {
   /// Not a skip: it changes the answer (on by default). Edges two triangle fixtures of the same
   /// body share are internal to that body (the same two vertices in the body frame, either
   /// order, bit for bit as `b2PolygonShape` stores them); the outline's flat and reflex vertices
-  /// next to them, and vertices whose two edges are both internal, are where no other triangle may
-  /// push. The exact backends (`Dyop`, `Sat`) never push along them (`Query::inactive_edges`,
-  /// `Query::flat_vertices`), so bodies slide over triangulated grounds without ghost
-  /// collisions; edges shared by two bodies stay outline edges. A contact takes its two
-  /// triangles' masks on its first evaluation, from a per-body index built when first needed,
-  /// and again when a body's fixtures have changed (the index is kept until `uninstall`). The
-  /// other backends ignore it and never look. Off: the world is bit-identical to Box2D's own
-  /// handling of each fixture alone, as the plug-in was without the rule.
+  /// next to them, and vertices whose two edges are both internal, are closed: no other triangle
+  /// may push there. The exact backends (`Dyop`, `Sat`) never push along them
+  /// (`Query::internal_edges`), so bodies slide over triangulated grounds without ghost
+  /// collisions; edges shared by two bodies stay outline edges. A contact finds its two
+  /// triangles' masks when the rule first needs them (its pair is not skipped), from the
+  /// fixtures' bodies as they are then (the body's triangles near each one, from the world's
+  /// broad phase), and keeps them in its `ContactMemory`; it finds them again when a fixture near
+  /// it changed (`ContactMemory::internal_edges_epoch`). The other backends ignore it and never
+  /// look. Off: the world is bit-identical to Box2D's own handling of each fixture alone, as the
+  /// plug-in was without the rule.
   bool internal_edges = true;
 
   /// Every skip on (the default), internal edges as by default.
@@ -178,26 +193,24 @@ struct ContactMemory {
   /// `Shapes::Triangles`: the sum, over the two shapes, of the distance from the shape's centroid
   /// (`m_centroid`) to its farthest vertex, metres, body frame (`Config::bounds_early_out`).
   float radius_sum = 0;
-  /// The two triangles' edges internal to their bodies, as `Query::inactive_edges` (bit i A's
-  /// edge i, bit 3 + i B's, Box2D's vertex order): set by a world's contact while
-  /// `Config::internal_edges` is on (see `edges_generation`); a caller of `collide_polygons` sets
-  /// it itself.
-  std::uint8_t inactive_edges = 0;
-  /// The vertices at which no axis of the other triangle may push, as `Query::flat_vertices`:
-  /// where the body's outline is flat or reflex next to an internal edge, or both of the
-  /// triangle's edges there are internal; set as `inactive_edges`.
-  std::uint8_t flat_vertices = 0;
-  /// A world's contact: the generation of the plug-in's internal-edge index the two masks were
-  /// taken at, 0 never (only while `Config::internal_edges` is on: with it off, contacts never
-  /// pay for the search). The index's generation moves when a body's fixtures change, and the
-  /// contact then takes its masks again.
-  std::uint8_t edges_generation = 0;
+  /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits,
+  /// then B's), used while the installed backend applies the rule (`Config::internal_edges`). A
+  /// world's contact finds them itself (see `internal_edges_epoch`); a caller of
+  /// `collide_polygons` sets them.
+  InternalEdges internal_edges{};
+  /// A world's contact: the install its masks were found under (see `install`), 0 not yet. They
+  /// are found from the two fixtures' bodies as they are when the rule first needs them, and
+  /// again after another `install`, or after a contact between the same two bodies was made or
+  /// destroyed between steps (a fixture of one of them added, destroyed, moved, enabled or changed
+  /// type): the contact then sets this to 0.
+  std::uint8_t internal_edges_epoch = 0;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
 /// skips) for triangle pairs, and resets `stats`. Never refused for a backend, and safe at any
-/// moment: before the first step, between the steps of running worlds, with several worlds alive,
-/// after a world was deleted. What holds:
+/// moment no thread is stepping a world (see "Threads and lifetimes" above): before the first
+/// step, between the steps of running worlds, with several worlds alive, after a world was
+/// deleted. What holds:
 /// - Box2D makes each contact with whatever is registered at that moment, and every contact is
 ///   freed as what it is: the plug-in's destroy function hands Box2D's own contacts to Box2D's
 ///   own, and Box2D's own (registered again by `uninstall`) frees the plug-in's correctly, as their
@@ -215,7 +228,7 @@ InstallResult install(Backend backend, const Config& config = Config::all());
 /// Registers again what was registered for polygon pairs before the plug-in was installed
 /// (Box2D's own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made
 /// after it is bit-identical to one that never saw the plug-in. Never refused, safe at any moment
-/// (see `install`); does nothing when not installed.
+/// `install` is; does nothing when not installed.
 InstallResult uninstall();
 
 /// The installed backend, or nothing when Box2D's own contact is registered.
@@ -233,7 +246,8 @@ void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShap
                       const b2Transform& xf_b, ContactMemory* memory = nullptr,
                       const Config& config = Config::all());
 
-/// Counters since the last `install` or `reset_stats`.
+/// Counters since the last `install` or `reset_stats`, summed over every thread that evaluated
+/// pairs (with one world, or worlds stepped one after another, the counts of those worlds).
 struct Stats {
   /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`; methods that are
   /// not backends stay 0).
@@ -249,7 +263,7 @@ struct Stats {
   /// Triangle-pair evaluations answered without running the backend, per reason (index:
   /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`.
   std::array<std::uint64_t, skip_count> skipped{};
-  /// Triangle-pair evaluations run by an exact backend with internal edges or flat vertices in
+  /// Triangle-pair evaluations run by an exact backend with internal edges or closed vertices in
   /// force (`Config::internal_edges`): the pairs whose contact the rule may change.
   std::uint64_t internal_edge_pairs = 0;
   /// Triangle pairs evaluated by `b`.
@@ -258,10 +272,12 @@ struct Stats {
   std::uint64_t skips(Skip s) const { return skipped[static_cast<int>(s)]; }
 };
 
-/// The counters since the last `install` or `reset_stats`.
+/// The counters since the last `install` or `reset_stats`, every thread's summed (threads that
+/// have ended included). Safe on any thread at any time; while other threads step, a snapshot.
 Stats stats();
 
-/// Sets every counter to zero.
+/// Sets every thread's counters to zero (exact while no thread is evaluating: an evaluation under
+/// way on another thread may keep its count).
 void reset_stats();
 
 /// Why three points cannot make a `b2PolygonShape` triangle.

@@ -101,9 +101,9 @@ struct MethodInfo {
   Accuracy accuracy;   ///< how exact it is by design
   PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
   PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
-  /// Honours `Query::inactive_edges` and `Query::flat_vertices` (the exact `dyop` and `sat`);
-  /// the others answer as if every axis were allowed.
-  bool allowed_directions = false;
+  /// Honours `Query::internal_edges` (the exact `dyop` and `sat`); the others answer as if every
+  /// axis were allowed.
+  bool internal_edges = false;
 
   /// True when it answers queries at `level`.
   constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }

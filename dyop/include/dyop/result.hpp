@@ -66,6 +66,36 @@ enum class Apart : std::uint8_t {
   Gap,
 };
 
+/// The masks of the internal-edge rule for one pair: where the triangles belong to triangulated
+/// bodies, the edges and vertices along which no push may leave the body (caller's order: bit i
+/// is A's edge or vertex i, bit 3 + i B's; edge i runs from vertex i to vertex i + 1).
+struct InternalEdges {
+  /// Edges internal to their body (shared with another triangle of the same body): their normals
+  /// are not directions the body's outline allows.
+  std::uint8_t edges = 0;
+  /// Closed vertices: no edge axis of the other triangle whose deepest vertex is one of these is
+  /// allowed. A vertex is closed where the body's outline is flat or reflex and one of its own
+  /// triangle's edges there is internal (that triangle's other edge normal, an axis of its own, is
+  /// the only direction the outline allows there), or where both of its edges in its triangle are
+  /// internal (inside the body, or on the outline between other triangles' edges, whose own pairs
+  /// carry its contact). A box sliding over a junction of flat ground triangles is then pushed up,
+  /// never back.
+  std::uint8_t closed_vertices = 0;
+
+  /// True when any edge or vertex is marked: only then can the rule change an answer.
+  constexpr bool any() const { return (edges | closed_vertices) != 0; }
+  /// The pair's masks from each triangle's own (bits 0..2 each): A's as they are, B's moved up.
+  static constexpr InternalEdges pair(InternalEdges a, InternalEdges b) {
+    return {static_cast<std::uint8_t>(a.edges | b.edges << 3),
+            static_cast<std::uint8_t>(a.closed_vertices | b.closed_vertices << 3)};
+  }
+};
+
+/// True when `x` and `y` mark the same edges and vertices.
+constexpr bool operator==(InternalEdges x, InternalEdges y) {
+  return x.edges == y.edges && x.closed_vertices == y.closed_vertices;
+}
+
 /// A query: the level, what to report for pairs apart, and for `Level::Manifold` how contact
 /// points are kept.
 template <class T>
@@ -82,32 +112,20 @@ struct Query {
   /// Level ≥ Depth: the distance of a pair found apart, or only a gap that proves it (`Apart`).
   /// The status is the same either way: a gap inside the touching band is decided by the distance.
   Apart apart = Apart::Distance;
-  /// Edges that are internal to a triangulated body (shared with another triangle of the same
-  /// body), whose normals are therefore not directions the body's outline allows: bit i is A's
-  /// edge i, bit 3 + i B's edge i (caller's order). Honoured by the exact methods (`dyop`,
-  /// `sat`; the other methods ignore it: `MethodInfo::allowed_directions`). The status (and, for
+  /// The internal-edge rule's masks (see `InternalEdges`). Honoured by the exact methods
+  /// (`dyop`, `sat`; the others ignore them: `MethodInfo::internal_edges`). The status (and, for
   /// pairs apart, `separation` and `normal`) is still decided over all six axes, so a pair
   /// separated only along an internal edge stays apart, and a pair apart beyond `margin` is
   /// answered as without masks. Otherwise, when the masks allow the pair's least axis and its
   /// reference face, the answer is the plain one; when not, `depth`, `normal` and the reference
   /// face come from the least *usable* axis: allowed (its edge not internal, its deepest vertex
-  /// not in `flat_vertices`) and reached (the other triangle touches that edge, within `margin`
-  /// and the touching band): the exact depth of the pair along the directions the outline allows
-  /// there. No usable axis: the status, `depth` and `normal` are the unrestricted answer and the
+  /// not closed) and reached (the other triangle touches that edge, within `margin` and the
+  /// touching band): the exact depth of the pair along the directions the outline allows there.
+  /// No usable axis: the status, `depth` and `normal` are the unrestricted answer and the
   /// manifold is empty (another pair of the two bodies carries the contact). One triangle reaching
-  /// no edge of the other (held whole by it): allowed axes suffice. 0 (the default): every axis
-  /// allowed, the plain answer, bit for bit.
-  std::uint8_t inactive_edges = 0;
-  /// Vertices at which no edge axis of the other triangle is allowed (bit i A's vertex i, bit
-  /// 3 + i B's, caller's order): an edge axis of the other triangle whose deepest vertex is one
-  /// of these is not allowed (same rules as `inactive_edges`). A caller marks (the plug-in
-  /// does) a vertex where the body's outline is flat or reflex and one of its own triangle's
-  /// edges there is allowed (that edge's normal, an axis of its own, is the only direction the
-  /// outline allows there), and a vertex whose two edges in its triangle are both internal (inside
-  /// the body, or on the outline between other triangles' edges, whose own pairs carry its
-  /// contact). A box sliding over a junction of flat ground triangles is then pushed up, never
-  /// back.
-  std::uint8_t flat_vertices = 0;
+  /// no edge of the other (held whole by it): allowed axes suffice. Empty (the default): every
+  /// axis allowed, the plain answer, bit for bit.
+  InternalEdges internal_edges{};
 };
 
 /// A vertex or an edge of one triangle, by caller's index.

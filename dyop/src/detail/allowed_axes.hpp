@@ -1,10 +1,10 @@
 #pragma once
 // Internal: which of a pair's six axes may give its depth, normal and reference face when the
-// caller marks edges internal or vertices flat (`Query::inactive_edges`, `flat_vertices`).
+// caller marks edges internal or vertices closed (`Query::internal_edges`).
 //
 // Axis k is an edge normal of one triangle, realised at the other triangle's deepest vertex
 // along it (first on ties, as `overlap_on_axis` picks it). It is allowed when its edge is not
-// internal and its deepest vertex is not a flat vertex of the other body (there the outline's
+// internal and its deepest vertex is not a closed vertex of the other body (there the outline's
 // directions are other axes, of its own triangle's or of its neighbours' pairs). It is usable
 // when, besides, the other triangle reaches the edge: a push along an edge's normal is a push
 // back out through that edge.
@@ -46,17 +46,18 @@ struct AllowedAxes {
 };
 
 // True when axis k of `f` is allowed by `q`'s masks (caller's order, see `Query`).
-// The deep vertex is looked for only when the other triangle has flat vertices at all.
+// The deep vertex is looked for only when the other triangle has closed vertices at all.
 template <class T>
 bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
   const bool own_is_a = k < 3;
   const int edge_bit = own_is_a ? f.ta.input_edge(k) : 3 + f.tb.input_edge(k - 3);
-  if ((q.inactive_edges >> edge_bit) & 1) return false;
-  const int other_flat = own_is_a ? q.flat_vertices >> 3 : q.flat_vertices & 7;
-  if (other_flat == 0) return true;
+  if ((q.internal_edges.edges >> edge_bit) & 1) return false;
+  const int other_closed = own_is_a ? q.internal_edges.closed_vertices >> 3
+                                   : q.internal_edges.closed_vertices & 7;
+  if (other_closed == 0) return true;
   const int deep = overlap_on_axis(f, k).deep;
   const int vertex = own_is_a ? f.tb.input_vertex(deep) : f.ta.input_vertex(deep);
-  return ((other_flat >> vertex) & 1) == 0;
+  return ((other_closed >> vertex) & 1) == 0;
 }
 
 // True when the other triangle touches axis k's edge, the segment, within `tol` (exact

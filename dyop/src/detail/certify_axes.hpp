@@ -51,7 +51,7 @@ template <class T>
   }
 }
 
-// The answer when the masks refuse the plain one (`Query::inactive_edges`, `flat_vertices`): the
+// The answer when the masks refuse the plain one (`Query::internal_edges`): the
 // status over all six axes, the depth, normal and reference face over the usable ones.
 template <class T, class Find>
 [[gnu::noinline]] Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
@@ -93,7 +93,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   // masks on every pair: one or two mask checks each keep it near the plain cost (callgrind,
   // 150 steps, Collide: 146 M instructions with the full rule on every pair, 95 M with both
   // checks reaching the edges, 76.6 M plain).
-  if ((q.inactive_edges | q.flat_vertices) != 0 && overlap[least] >= -q.margin &&
+  if (q.internal_edges.any() && overlap[least] >= -q.margin &&
       !(axis_allowed(f, q, least) &&
         (reference.axis == least || axis_allowed(f, q, reference.axis)))) {
     // Assigned, not returned: one named result on every path keeps the return value optimisation

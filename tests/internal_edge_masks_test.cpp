@@ -1,4 +1,4 @@
-// `Query::inactive_edges` and `Query::flat_vertices` with the exact methods (`dyop`, `sat`): the
+// `Query::internal_edges` with the exact methods (`dyop`, `sat`): the
 // depth along the directions a triangulated body's outline allows, on cases worked by hand.
 //
 // The ground is the top row of a triangulated strip whose top is y = 0: cell [1, 2] × [-1, 0]
@@ -40,21 +40,20 @@ template <class T>
 Query<T> query(Level level, std::uint8_t edges, std::uint8_t vertices) {
   Query<T> q;
   q.level = level;
-  q.inactive_edges = edges;
-  q.flat_vertices = vertices;
+  q.internal_edges = {edges, vertices};
   return q;
 }
 
 template <class T>
-class InactiveEdges : public ::testing::Test {};
-TYPED_TEST_SUITE(InactiveEdges, test_support::Scalars, test_support::ScalarNames);
+class InternalEdgeMasks : public ::testing::Test {};
+TYPED_TEST_SUITE(InternalEdgeMasks, test_support::Scalars, test_support::ScalarNames);
 
 // Both exact methods, same answer.
 template <class T, class Check>
 void for_exact_methods(const Check& check) {
   for (const Method m : {Method::Dyop, Method::Sat}) {
     SCOPED_TRACE(name(m));
-    EXPECT_TRUE(info(m).allowed_directions);
+    EXPECT_TRUE(info(m).internal_edges);
     check(m);
   }
 }
@@ -71,7 +70,7 @@ void expect_up(const Result<T>& r, T depth) {
 // least axis is the internal edge x = 1 (0.02: B pushed back, the ghost collision); B's own side
 // x = 1.02 gives 0.02 too, but its deepest vertex of A is the flat vertex (1,0). Allowed: the
 // top, 0.05, up.
-TYPED_TEST(InactiveEdges, VertexOfBAgainstAFlatJunction) {
+TYPED_TEST(InternalEdgeMasks, VertexOfBAgainstAFlatJunction) {
   using T = TypeParam;
   const auto a = ground<T>();
   const auto b = tri<T>(T(1.02), T(-0.05), T(1.02), 1, 0, 1);
@@ -99,7 +98,7 @@ TYPED_TEST(InactiveEdges, VertexOfBAgainstAFlatJunction) {
 // B = (0.5,-0.6) (1.5,-0.6) (1,0.5) straddles the internal edge x = 1, 0.6 deep. Unrestricted:
 // 0.5 along -x (the internal edge). B's faces: its bottom reaches A's flat vertex (1,0); its
 // sides give 0.621 and 1.117. Allowed least: the top, 0.6.
-TYPED_TEST(InactiveEdges, TriangleOfBStraddlingAnInternalEdge) {
+TYPED_TEST(InternalEdgeMasks, TriangleOfBStraddlingAnInternalEdge) {
   using T = TypeParam;
   const auto a = ground<T>();
   const auto b = tri<T>(T(0.5), T(-0.6), T(1.5), T(-0.6), 1, T(0.5));
@@ -115,7 +114,7 @@ TYPED_TEST(InactiveEdges, TriangleOfBStraddlingAnInternalEdge) {
 
 // B = (1.1,-0.5) (1.3,-0.5) (1.2,-0.3), deep inside, every edge of B internal to its body: only
 // A's top is allowed. Unrestricted: 0.3 along -x (x = 1); the diagonal gives 0.354; the top 0.5.
-TYPED_TEST(InactiveEdges, DeepPenetrationWhereOnlyTheOutlineIsAllowed) {
+TYPED_TEST(InternalEdgeMasks, DeepPenetrationWhereOnlyTheOutlineIsAllowed) {
   using T = TypeParam;
   const auto a = ground<T>();
   const auto b = tri<T>(T(1.1), T(-0.5), T(1.3), T(-0.5), T(1.2), T(-0.3));
@@ -135,7 +134,7 @@ TYPED_TEST(InactiveEdges, DeepPenetrationWhereOnlyTheOutlineIsAllowed) {
 // outline edge is the bottom, y = -1. B, a box's triangle resting on the top across the apex
 // 0.01 deep, reaches the bottom nowhere: the bottom is allowed by the masks but is no way out,
 // and the pair gives no contact (the top triangles carry it). Unrestricted: 0.01 up.
-TYPED_TEST(InactiveEdges, AnOutlineEdgeTheOtherTriangleDoesNotReachIsNoAxis) {
+TYPED_TEST(InternalEdgeMasks, AnOutlineEdgeTheOtherTriangleDoesNotReachIsNoAxis) {
   using T = TypeParam;
   const auto c = tri<T>(1, -1, 2, -1, 2, 0);
   const auto b = tri<T>(T(1.7), T(-0.01), T(2.3), T(-0.01), T(2.3), T(0.5));
@@ -151,7 +150,7 @@ TYPED_TEST(InactiveEdges, AnOutlineEdgeTheOtherTriangleDoesNotReachIsNoAxis) {
 
 // The depth against the exact rational reference: in each constructed case above, the least
 // exact overlap over the edges the rule may use there (listed by hand from the cases' comments).
-TYPED_TEST(InactiveEdges, DepthIsTheLeastExactOverlapAlongTheUsableEdges) {
+TYPED_TEST(InternalEdgeMasks, DepthIsTheLeastExactOverlapAlongTheUsableEdges) {
   using T = TypeParam;
   struct Usable {
     bool of_a;
@@ -191,7 +190,7 @@ TYPED_TEST(InactiveEdges, DepthIsTheLeastExactOverlapAlongTheUsableEdges) {
 
 // Apart by 0.05 along the internal edge only (B left of x = 1, level with the top): the status
 // is decided over all axes, and a manifold is empty beyond the margin.
-TYPED_TEST(InactiveEdges, SeparatedAlongAnInternalEdgeStaysApart) {
+TYPED_TEST(InternalEdgeMasks, SeparatedAlongAnInternalEdgeStaysApart) {
   using T = TypeParam;
   const auto a = ground<T>();
   const auto b = tri<T>(T(0.95), T(-0.5), T(0.95), T(0.5), 0, T(0.5));
@@ -206,7 +205,7 @@ TYPED_TEST(InactiveEdges, SeparatedAlongAnInternalEdgeStaysApart) {
 
 // Every axis of both triangles internal: the status and depth are the unrestricted answer, and
 // no contact comes from this pair.
-TYPED_TEST(InactiveEdges, NoAllowedAxisGivesNoContact) {
+TYPED_TEST(InternalEdgeMasks, NoAllowedAxisGivesNoContact) {
   using T = TypeParam;
   const auto a = ground<T>();
   const auto b = tri<T>(T(1.1), T(-0.5), T(1.3), T(-0.5), T(1.2), T(-0.3));
@@ -222,7 +221,7 @@ TYPED_TEST(InactiveEdges, NoAllowedAxisGivesNoContact) {
 // Masks given in the caller's order also for clockwise input: A given clockwise is the same
 // triangle with edges renumbered (caller edge 2 = (1,0)->(2,0)... here: (1,0) (2,0) (1,-1), whose
 // edges 0 top, 1 diagonal, 2 internal x = 1; vertices 0 and 1 flat).
-TYPED_TEST(InactiveEdges, MasksAreInTheCallersOrder) {
+TYPED_TEST(InternalEdgeMasks, MasksAreInTheCallersOrder) {
   using T = TypeParam;
   const auto a = tri<T>(1, 0, 2, 0, 1, -1);
   const auto b = tri<T>(T(1.02), T(-0.05), T(1.02), 1, 0, 1);
@@ -234,9 +233,9 @@ TYPED_TEST(InactiveEdges, MasksAreInTheCallersOrder) {
 }
 
 // Methods without the rule answer as if every axis were allowed.
-TEST(InactiveEdgesRegistry, OnlyTheExactMethodsHonourIt) {
+TEST(InternalEdgeMasksRegistry, OnlyTheExactMethodsHonourIt) {
   for (const MethodInfo& row : method_table) {
-    EXPECT_EQ(row.allowed_directions, row.method == Method::Dyop || row.method == Method::Sat)
+    EXPECT_EQ(row.internal_edges, row.method == Method::Dyop || row.method == Method::Sat)
         << row.name;
   }
 }

@@ -1,0 +1,119 @@
+#include "evaluation.hpp"
+
+#include <cmath>
+
+#include "internal_edges.hpp"
+
+namespace dyop::box2d {
+namespace detail {
+namespace {
+
+Vec2<float> vec(const b2Vec2& v) { return {v.x, v.y}; }
+
+// Distance from the shape's centroid to its farthest vertex (body frame).
+float bounding_radius(const b2PolygonShape& shape) {
+  float sq = 0;
+  for (int i = 0; i < shape.m_count; ++i) {
+    sq = std::max(sq, (shape.m_vertices[i] - shape.m_centroid).LengthSquared());
+  }
+  return std::sqrt(sq);
+}
+
+bool valid_triangle(const b2PolygonShape& shape) {
+  return Triangle<float>::make(vec(shape.m_vertices[0]), vec(shape.m_vertices[1]),
+                               vec(shape.m_vertices[2]))
+      .ok();
+}
+
+// The shape's triangle (Box2D's CCW vertices and its own unit normals) in its body frame, or
+// placed by `xf`.
+std::array<Vec2<float>, 3> vertices(const b2PolygonShape& shape) {
+  return {vec(shape.m_vertices[0]), vec(shape.m_vertices[1]), vec(shape.m_vertices[2])};
+}
+std::array<Vec2<float>, 3> normals(const b2PolygonShape& shape) {
+  return {vec(shape.m_normals[0]), vec(shape.m_normals[1]), vec(shape.m_normals[2])};
+}
+Triangle<float> placed(const b2PolygonShape& shape) {
+  return Triangle<float>::from_validated(vertices(shape), normals(shape));
+}
+Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
+  return Triangle<float>::from_validated(vertices(shape), normals(shape), xf.q.c, xf.q.s,
+                                         vec(xf.p));
+}
+
+// The pair's masks when the rule is on: a world's contact finds them from its fixtures once per
+// install, and again when a fixture near them changed (the contact then clears its epoch).
+InternalEdges masks_for(const Setting& setting, ContactMemory& memory,
+                        const PairFixtures& fixtures) {
+  if (!setting.internal_edges) return {};
+  if (fixtures.a && memory.internal_edges_epoch != setting.epoch) {
+    memory.internal_edges = InternalEdges::pair(triangle_internal_edges(*fixtures.a),
+                                                triangle_internal_edges(*fixtures.b));
+    memory.internal_edges_epoch = setting.epoch;
+  }
+  return memory.internal_edges;
+}
+
+}  // namespace
+
+void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory) {
+  if (a.m_count != 3 || b.m_count != 3) {
+    memory.shapes = ContactMemory::Shapes::Polygons;
+    return;
+  }
+  memory.shapes = valid_triangle(a) && valid_triangle(b)
+                      ? ContactMemory::Shapes::Triangles
+                      : ContactMemory::Shapes::InvalidTriangles;
+  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
+}
+
+bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
+                const b2Transform& b_in_a, ContactMemory& memory, const PairFixtures& fixtures) {
+  Query<float> query;
+  query.internal_edges = masks_for(setting, memory, fixtures);
+  if (query.internal_edges.any()) counters().internal_edge_pairs.add();
+  query.level = Level::Manifold;
+  query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's
+  query.face_hysteresis = face_hysteresis;
+  query.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
+  LinCannyCache cold;
+  const Result<float> r = penetrate(*setting.method, placed(pair.a), placed(pair.b, b_in_a), query,
+                                    setting.config.lin_canny_cache ? &memory.lin_canny : &cold);
+  if (r.status == Status::Invalid) return false;
+
+  const Manifold<float>& mf = r.manifold;
+  memory.last_face = static_cast<std::int8_t>(mf.reference_edge + (mf.reference_is_a ? 0 : 3));
+  manifold->pointCount = mf.point_count;
+  if (mf.point_count == 0) return true;
+
+  // The reference face in its own body's frame, from the polygon's own data (not the method's
+  // recomputed normal): the solver then sees exactly the plane Box2D would have given it.
+  const b2PolygonShape& ref = mf.reference_is_a ? pair.a : pair.b;
+  const int e1 = mf.reference_edge;
+  const int e2 = e1 + 1 < ref.m_count ? e1 + 1 : 0;
+  manifold->type = mf.reference_is_a ? b2Manifold::e_faceA : b2Manifold::e_faceB;
+  manifold->localNormal = ref.m_normals[e1];
+  manifold->localPoint = 0.5f * (ref.m_vertices[e1] + ref.m_vertices[e2]);
+  for (int i = 0; i < mf.point_count; ++i) {
+    // Points lie on the incident triangle, computed in A's frame: B's points go back to B's frame.
+    const b2Vec2 p(mf.points[i].point.x(), mf.points[i].point.y());
+    b2ManifoldPoint& mp = manifold->points[i];
+    mp.localPoint = mf.reference_is_a ? b2MulT(b_in_a, p) : p;
+    mp.normalImpulse = 0;
+    mp.tangentImpulse = 0;
+    mp.id.key = mf.points[i].key;
+  }
+  return true;
+}
+
+}  // namespace detail
+
+void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape& shape_a,
+                      const b2Transform& xf_a, const b2PolygonShape& shape_b,
+                      const b2Transform& xf_b, ContactMemory* memory, const Config& config) {
+  ContactMemory cold;
+  detail::evaluate(manifold, detail::Setting(backend, config, 0), {shape_a, xf_a, shape_b, xf_b},
+                   memory ? *memory : cold);
+}
+
+}  // namespace dyop::box2d

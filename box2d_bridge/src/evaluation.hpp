@@ -1,0 +1,141 @@
+#pragma once
+// Internal: the plug-in's one evaluation of a polygon pair, for a world's contact and for
+// `collide_polygons` alike. What answers (the backend's method, or Box2D's `b2CollidePolygons`,
+// called in one place), which skips apply, where the internal-edge masks come from and what is
+// counted are decided here and nowhere else.
+//
+// Inline, with the contact's `Evaluate`: most evaluations in a world end in a skip that costs a
+// few dozen instructions, and Box2D's own contact answers a pair apart after one face test, so
+// every call and every transformed vertex counts. The skip tests rotate one normal into the other
+// body's frame instead of moving three vertices. The method's run is out of line (evaluation.cpp).
+
+#include <box2d/b2_collision.h>
+#include <box2d/b2_fixture.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <algorithm>
+
+#include "dyop/box2d.hpp"
+#include "installation.hpp"
+#include "stats.hpp"
+
+namespace dyop::box2d::detail {
+
+// A polygon pair as Box2D hands it over: the shapes in their body frames and the bodies'
+// transforms.
+struct PolygonPair {
+  const b2PolygonShape& a;
+  const b2Transform& xf_a;
+  const b2PolygonShape& b;
+  const b2Transform& xf_b;
+};
+
+// The fixtures a world's contact was made for: where its internal-edge masks are found. Both
+// null for `collide_polygons`, whose caller sets the masks in its `ContactMemory`.
+struct PairFixtures {
+  const b2Fixture* a = nullptr;
+  const b2Fixture* b = nullptr;
+};
+
+// The first evaluation: what the two shapes are (valid triangles, invalid ones, larger polygons)
+// and their bounding radii, kept in `memory` (the shapes of a fixture never change).
+void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory);
+
+// The setting's method on two valid triangles (`b_in_a`: B's body frame given in A's), with the
+// pair's internal-edge masks when the rule is on (found from `fixtures` when the memory's are not
+// from this install). True when it answered and `manifold` holds its answer; false when the
+// method could not answer (`Status::Invalid`) and Box2D's code must.
+bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
+                const b2Transform& b_in_a, ContactMemory& memory, const PairFixtures& fixtures);
+
+// Separation of the pair along face `face` (0..2: A's edge, 3..5: B's; frames as in
+// `b_in_a`, B's body frame given in A's), with the other triangle's whole support: a lower bound
+// on the pair's distance. The face's normal is rotated into the other body's frame, so the other
+// triangle's vertices are used as the shape holds them.
+inline float face_separation(int face, const b2PolygonShape& a, const b2PolygonShape& b,
+                             const b2Transform& b_in_a) {
+  if (face < 3) {
+    const b2Vec2& n = a.m_normals[face];
+    const b2Vec2 m = b2MulT(b_in_a.q, n);  // A's normal in B's frame
+    const float least = std::min(std::min(b2Dot(m, b.m_vertices[0]), b2Dot(m, b.m_vertices[1])),
+                                 b2Dot(m, b.m_vertices[2]));
+    return least + b2Dot(n, b_in_a.p - a.m_vertices[face]);
+  }
+  const int e = face - 3;
+  const b2Vec2& n = b.m_normals[e];
+  const b2Vec2 m = b2Mul(b_in_a.q, n);  // B's normal in A's frame
+  const float least = std::min(std::min(b2Dot(m, a.m_vertices[0]), b2Dot(m, a.m_vertices[1])),
+                               b2Dot(m, a.m_vertices[2]));
+  return least - b2Dot(m, b_in_a.p) - b2Dot(n, b.m_vertices[e]);
+}
+
+// Beyond this separation along any one face normal (metres), for skins summing to `margin`, a
+// manifold has no point: the reference face the full evaluation picks separates the pair by at
+// least that face's separation minus `face_hysteresis` (it is the best face of A or B, B's only
+// when it beats A's by the hysteresis), and every clipped point lies on the incident edge, at
+// least as far from the reference line as the nearer of its ends. So a face whose separation
+// exceeds margin + face_hysteresis proves the manifold empty, exactly.
+inline float face_reach(float margin) { return margin + face_hysteresis; }
+
+// True when the bounding circles are farther apart than `far` (compared squared: no root).
+inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
+                          const b2Transform& b_in_a, const ContactMemory& memory, float far) {
+  const float reach_sum = memory.radius_sum + far;
+  return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
+}
+
+// Who answered a pair.
+enum class Answer : std::uint8_t {
+  Plugin,          // the backend's method, or a skip: `manifold` is written
+  Box2DTriangles,  // a triangle pair for Box2D's code (backend `Box2D`, or a fallback)
+  Box2DOther,      // uninstalled, or a larger polygon: Box2D's code, as its own contact
+};
+
+// The installed backend's part of an evaluation (counted): a skip, the method's answer, or who
+// Box2D's code answers for.
+inline Answer plug_in_answer(b2Manifold* manifold, const Setting& setting, const PolygonPair& p,
+                             ContactMemory& memory, const PairFixtures& fixtures) {
+  using Shapes = ContactMemory::Shapes;
+  ThreadCounters& count = counters();
+  if (memory.shapes == Shapes::Unchecked) look_at_shapes(p.a, p.b, memory);
+  if (memory.shapes == Shapes::Polygons) {
+    count.polygon_pairs.add();
+    return Answer::Box2DOther;
+  }
+  count.triangle_pairs[static_cast<int>(*setting.backend)].add();
+
+  const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
+  const float margin = p.a.m_radius + p.b.m_radius;
+  const bool skip_bounds =
+      setting.config.bounds_early_out && circles_apart(p.a, p.b, b_in_a, memory, reach(margin));
+  if (skip_bounds || (setting.config.warm_axis && setting.method && memory.last_face >= 0 &&
+                      face_separation(memory.last_face, p.a, p.b, b_in_a) > face_reach(margin))) {
+    manifold->pointCount = 0;
+    count.skipped[static_cast<int>(skip_bounds ? Skip::Bounds : Skip::WarmAxis)].add();
+    return Answer::Plugin;
+  }
+  // `Backend::Box2D` has no method: Box2D's own code is its answer, not a fallback. A method
+  // that cannot answer falls back so that the world goes on, and is counted.
+  if (!setting.method) return Answer::Box2DTriangles;
+  if (memory.shapes == Shapes::Triangles &&
+      run_method(manifold, setting, p, b_in_a, memory, fixtures)) {
+    if (manifold->pointCount > 0) count.manifolds.add();
+    return Answer::Plugin;
+  }
+  count.fallbacks.add();
+  return Answer::Box2DTriangles;
+}
+
+// The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
+// uncounted, exactly as Box2D's own contact); `memory` is the pair's state, updated.
+inline void evaluate(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
+                     ContactMemory& memory, const PairFixtures& fixtures = {}) {
+  const Answer answer = setting.backend
+                            ? plug_in_answer(manifold, setting, pair, memory, fixtures)
+                            : Answer::Box2DOther;
+  if (answer == Answer::Plugin) return;
+  b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
+  if (answer == Answer::Box2DTriangles && manifold->pointCount > 0) counters().manifolds.add();
+}
+
+}  // namespace dyop::box2d::detail
