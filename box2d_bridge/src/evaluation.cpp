@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "internal_edges.hpp"
+#include "triangle_contact.hpp"
 
 namespace dyop::box2d {
 namespace detail {
@@ -41,14 +41,13 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// The pair's masks when the rule is on: a world's contact finds them from its fixtures once per
-// install, and again when a fixture near them changed (the contact then clears its epoch).
+// The pair's masks when the rule is on: a world's contact finds them once per install, and again
+// when a fixture near them changed (the contact then clears its epoch).
 InternalEdges masks_for(const Setting& setting, ContactMemory& memory,
-                        const PairFixtures& fixtures) {
+                        const TriangleContact* contact) {
   if (!setting.internal_edges) return {};
-  if (fixtures.a && memory.internal_edges_epoch != setting.epoch) {
-    memory.internal_edges = InternalEdges::pair(triangle_internal_edges(*fixtures.a),
-                                                triangle_internal_edges(*fixtures.b));
+  if (contact && memory.internal_edges_epoch != setting.epoch) {
+    memory.internal_edges = contact->find_internal_edges(setting.epoch);
     memory.internal_edges_epoch = setting.epoch;
   }
   return memory.internal_edges;
@@ -68,9 +67,9 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
 }
 
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
-                const b2Transform& b_in_a, ContactMemory& memory, const PairFixtures& fixtures) {
+                const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact) {
   Query<float> query;
-  query.internal_edges = masks_for(setting, memory, fixtures);
+  query.internal_edges = masks_for(setting, memory, contact);
   if (query.internal_edges.any()) counters().internal_edge_pairs.add();
   query.level = Level::Manifold;
   query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's

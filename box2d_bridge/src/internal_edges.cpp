@@ -17,9 +17,13 @@ namespace {
 // edge's normal is within that angle of the outline's.
 constexpr float flat_outline_sine = 1e-3f;
 
-// Neighbours a query usually finds (a fan of 16 about a vertex touches 32 triangles at most):
-// the list's first allocation, so that a query of a dense ground rarely grows it.
-constexpr std::size_t usual_neighbours = 32;
+// A body with at most this many fixtures has its list walked instead of the broad phase queried.
+// Why: the result is the same (every triangle of the body is a candidate; only those sharing a
+// vertex count), and a walk costs tens of instructions per fixture against about 3,500 for one
+// query of a ground's broad phase (callgrind): below a few dozen fixtures the walk is cheaper, and
+// a split box or a star (2 to 10 fixtures) never pays for a query.
+constexpr int walked_body_fixtures = 16;
+
 
 // A body-frame vertex as its two floats' bits (-0 made +0: the same point).
 std::uint64_t point_key(const b2Vec2& v) {
@@ -43,6 +47,8 @@ struct TriangleKeys {
   std::uint64_t v[3];
   explicit TriangleKeys(const b2PolygonShape& p)
       : v{point_key(p.m_vertices[0]), point_key(p.m_vertices[1]), point_key(p.m_vertices[2])} {}
+  // True when this triangle has the vertex p.
+  bool has_vertex(std::uint64_t p) const { return v[0] == p || v[1] == p || v[2] == p; }
   // True when this triangle has the edge p–q, either way round.
   bool has_edge(std::uint64_t p, std::uint64_t q) const {
     for (int i = 0; i < 3; ++i) {
@@ -54,35 +60,64 @@ struct TriangleKeys {
   }
 };
 
-// The other triangle fixtures of one body whose broad-phase boxes overlap a query box.
+// The other triangle fixtures of one fixture's body that share a vertex with it: the only ones
+// its masks depend on. Looked for among all of the body's fixtures for a small body, else among
+// those whose broad-phase boxes overlap its own.
 class Neighbours : public b2QueryCallback {
  public:
-  explicit Neighbours(const b2Fixture& self) : self_(self) { shapes_.reserve(usual_neighbours); }
-
-  bool ReportFixture(b2Fixture* f) override {
-    if (f != &self_ && f->GetBody() == self_.GetBody()) {
-      if (const b2PolygonShape* p = triangle_of(*f)) shapes_.push_back({p, TriangleKeys(*p)});
-    }
-    return true;  // every overlap
-  }
-
   struct Entry {
     const b2PolygonShape* shape;
     TriangleKeys keys;
   };
+
+  // `scratch` is emptied and filled: the calling thread's, reused so that finding masks
+  // allocates nothing once it has grown to the largest neighbourhood seen.
+  Neighbours(const b2Fixture& self, const TriangleKeys& keys, std::vector<Entry>& scratch)
+      : self_(self), keys_(keys), shapes_(scratch) {
+    shapes_.clear();
+  }
+
+  void collect() {
+    const b2Body& body = *self_.GetBody();
+    int count = 0;
+    const b2Fixture* f = body.GetFixtureList();
+    for (; f && count <= walked_body_fixtures; f = f->GetNext()) ++count;
+    if (f == nullptr) {  // a small body: all of it
+      for (f = body.GetFixtureList(); f; f = f->GetNext()) consider(*f);
+    } else {
+      body.GetWorld()->QueryAABB(this, self_.GetAABB(0));
+    }
+  }
+
+  bool ReportFixture(b2Fixture* f) override {
+    consider(*f);
+    return true;  // every overlap
+  }
+
   const std::vector<Entry>& found() const { return shapes_; }
 
-  // True when a triangle among them other than `except` has the edge p–q.
-  bool shared(std::uint64_t p, std::uint64_t q, const Entry* except = nullptr) const {
+  // True when a triangle among them has the edge p–q.
+  bool shared(std::uint64_t p, std::uint64_t q) const {
     for (const Entry& e : shapes_) {
-      if (&e != except && e.keys.has_edge(p, q)) return true;
+      if (e.keys.has_edge(p, q)) return true;
     }
     return false;
   }
 
  private:
+  void consider(const b2Fixture& f) {
+    if (&f == &self_ || f.GetBody() != self_.GetBody()) return;
+    const b2PolygonShape* p = triangle_of(f);
+    if (!p) return;
+    const TriangleKeys keys(*p);
+    if (keys.has_vertex(keys_.v[0]) || keys.has_vertex(keys_.v[1]) || keys.has_vertex(keys_.v[2])) {
+      shapes_.push_back({p, keys});
+    }
+  }
+
   const b2Fixture& self_;
-  std::vector<Entry> shapes_;
+  const TriangleKeys& keys_;
+  std::vector<Entry>& shapes_;
 };
 
 // The outline edges (edges of one triangle only) leaving and entering a vertex.
@@ -125,11 +160,12 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   const b2Body& body = *fixture.GetBody();
   if (!own || (body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr)) return {};
 
-  Neighbours near(fixture);
-  body.GetWorld()->QueryAABB(&near, fixture.GetAABB(0));
+  const TriangleKeys keys(*own);
+  thread_local std::vector<Neighbours::Entry> scratch;
+  Neighbours near(fixture, keys, scratch);
+  near.collect();
   if (near.found().empty()) return {};
 
-  const TriangleKeys keys(*own);
   InternalEdges masks;
   for (int i = 0; i < 3; ++i) {
     if (near.shared(keys.v[i], keys.v[i < 2 ? i + 1 : 0])) {
@@ -150,12 +186,25 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
       // triangle with this vertex is among the neighbours, so the body's outline edges there are
       // the edges at it that one triangle only has (this one or a neighbour).
       const std::uint64_t at = keys.v[i];
-      VertexOutline outline;
-      outline.add(*own, keys, at,
-                  [&](std::uint64_t p, std::uint64_t q) { return !near.shared(p, q); });
+      thread_local std::vector<const Neighbours::Entry*> around;  // the neighbours with `at`
+      around.clear();
       for (const Neighbours::Entry& e : near.found()) {
-        outline.add(*e.shape, e.keys, at, [&](std::uint64_t p, std::uint64_t q) {
-          return !keys.has_edge(p, q) && !near.shared(p, q, &e);
+        if (e.keys.has_vertex(at)) around.push_back(&e);
+      }
+      // An edge at `at` is shared only with triangles that have `at`.
+      const auto shared_around = [&](std::uint64_t p, std::uint64_t q, const void* except) {
+        for (const Neighbours::Entry* e : around) {
+          if (e != except && e->keys.has_edge(p, q)) return true;
+        }
+        return false;
+      };
+      VertexOutline outline;
+      outline.add(*own, keys, at, [&](std::uint64_t p, std::uint64_t q) {
+        return !shared_around(p, q, nullptr);
+      });
+      for (const Neighbours::Entry* e : around) {
+        outline.add(*e->shape, e->keys, at, [&](std::uint64_t p, std::uint64_t q) {
+          return !keys.has_edge(p, q) && !shared_around(p, q, e);
         });
       }
       if (!outline.flat_or_reflex()) continue;

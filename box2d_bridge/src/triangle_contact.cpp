@@ -5,9 +5,11 @@
 #include <box2d/b2_world.h>
 
 #include <new>
+#include <optional>
 #include <typeinfo>
 
 #include "evaluation.hpp"
+#include "internal_edges.hpp"
 #include "installation.hpp"
 
 namespace dyop::box2d::detail {
@@ -19,15 +21,11 @@ constexpr std::size_t box2d_polygon_contact_size = sizeof(b2Contact);
 constexpr std::size_t allocator_class_below = 192;
 constexpr std::size_t allocator_class = 224;
 
-bool is_ours(const b2Contact& c) { return typeid(c) == typeid(TriangleContact); }
-
-// A contact between bodies `p` and `q` made or destroyed between steps (the world unlocked) means
-// a fixture of one of them was added, destroyed, moved, enabled or changed type: the other
-// contacts between the same two bodies find their internal-edge masks again. (Any fixture whose
-// edge a contact's pair could push along is within the skins of it, well inside the broad phase's
-// fattened boxes, so it has a contact of its own with the other body.) The shorter of the two
-// bodies' contact lists is walked: a ground's may be long, a falling body's is short.
-void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
+// Calls `visit(TriangleContact&)` for the plug-in's contacts between bodies `p` and `q` until it
+// returns false, walking the shorter of the two bodies' contact lists: a ground's may be long, a
+// falling body's is short.
+template <class Visit>
+void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) {
   const b2ContactEdge* x = p.GetContactList();
   const b2ContactEdge* y = q.GetContactList();
   while (x && y) {
@@ -37,10 +35,28 @@ void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
   const b2Body& walked = x ? q : p;
   const b2Body& other = x ? p : q;
   for (const b2ContactEdge* e = walked.GetContactList(); e; e = e->next) {
-    if (e->other == &other && is_ours(*e->contact)) {
-      static_cast<TriangleContact*>(e->contact)->forget_internal_edges();
-    }
+    if (e->other != &other) continue;
+    if (TriangleContact* c = TriangleContact::ours(e->contact); c && !visit(*c)) return;
   }
+}
+
+// A contact between bodies `p` and `q` made or destroyed between steps (the world unlocked) means
+// a fixture of one of them was added, destroyed, moved, enabled or changed type: the other
+// contacts between the same two bodies find their internal-edge masks again. (Any fixture whose
+// edge a contact's pair could push along is within the skins of it, well inside the broad phase's
+// fattened boxes, so it has a contact of its own with the other body.)
+void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
+  for_contacts_between(p, q, [](TriangleContact& c) {
+    c.forget_internal_edges();
+    return true;
+  });
+}
+
+// Bits 0..2 of one triangle's half of a pair's masks: A's (`high` false) or B's.
+InternalEdges half(InternalEdges m, bool high) {
+  const int shift = high ? 3 : 0;
+  return {static_cast<std::uint8_t>((m.edges >> shift) & 7),
+          static_cast<std::uint8_t>((m.closed_vertices >> shift) & 7)};
 }
 
 // Between steps, with the rule on: see `forget_internal_edges_between`.
@@ -73,7 +89,7 @@ b2Contact* TriangleContact::create(b2Fixture* fixture_a, int32, b2Fixture* fixtu
 
 void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
   fixtures_changed_near(*contact);
-  if (!is_ours(*contact)) {
+  if (!ours(contact)) {
     // Made by Box2D's own code before an install: its own function frees it. `installation()`
     // saved that function before our destroy could ever be registered.
     installation().box2d_own.destroy(contact, allocator);
@@ -81,6 +97,28 @@ void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
   }
   static_cast<TriangleContact*>(contact)->~TriangleContact();
   allocator->Free(contact, sizeof(TriangleContact));
+}
+
+TriangleContact* TriangleContact::ours(b2Contact* c) {
+  return typeid(*c) == typeid(TriangleContact) ? static_cast<TriangleContact*>(c) : nullptr;
+}
+
+InternalEdges TriangleContact::find_internal_edges(std::uint8_t epoch) const {
+  // Sharing is safe within one pair of bodies: what makes one of these contacts' masks stale
+  // (a contact between the two bodies made or destroyed between steps) clears them all.
+  std::optional<InternalEdges> a;
+  std::optional<InternalEdges> b;
+  for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
+    if (&c == this || c.memory_.internal_edges_epoch != epoch) return true;
+    const InternalEdges m = c.memory_.internal_edges;
+    if (!a && c.m_fixtureA == m_fixtureA) a = half(m, false);
+    if (!a && c.m_fixtureB == m_fixtureA) a = half(m, true);
+    if (!b && c.m_fixtureA == m_fixtureB) b = half(m, false);
+    if (!b && c.m_fixtureB == m_fixtureB) b = half(m, true);
+    return !(a && b);
+  });
+  return InternalEdges::pair(a ? *a : triangle_internal_edges(*m_fixtureA),
+                             b ? *b : triangle_internal_edges(*m_fixtureB));
 }
 
 TriangleContact::TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b)
@@ -91,8 +129,7 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
   // The registry dispatches only polygon–polygon pairs here.
   const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
   const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
-  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_,
-           {m_fixtureA, m_fixtureB});
+  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_, this);
 }
 
 }  // namespace dyop::box2d::detail

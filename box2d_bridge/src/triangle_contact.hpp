@@ -22,6 +22,16 @@ class TriangleContact final : public b2Contact {
 
   void Evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b) override;
 
+  // The plug-in's contact `c` is, or nullptr (Box2D's own, made before an install).
+  static TriangleContact* ours(b2Contact* c);
+
+  // The pair's internal-edge masks (`ContactMemory::internal_edges`), for install `epoch`: each
+  // triangle's half taken from another contact between the same two bodies that has the same
+  // fixture and masks found under `epoch`, else found from the fixture's body
+  // (`triangle_internal_edges`). A box on a ground finds a ground triangle's masks once for all
+  // its fixtures touching it.
+  InternalEdges find_internal_edges(std::uint8_t epoch) const;
+
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
   void forget_internal_edges() { memory_.internal_edges_epoch = 0; }
 
