@@ -41,14 +41,17 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// The pair's masks when the rule is on: a world's contact finds them once per install, and again
-// when a fixture near them changed (the contact then clears its epoch).
+// The pair's masks when the rule is on: a world's contact finds them again whenever its stamp
+// (the install, the world's fixtures) moved since they were found.
 InternalEdges masks_for(const Setting& setting, ContactMemory& memory,
                         const TriangleContact* contact) {
   if (!setting.internal_edges) return {};
-  if (contact && memory.internal_edges_epoch != setting.epoch) {
-    memory.internal_edges = contact->find_internal_edges(setting.epoch);
-    memory.internal_edges_epoch = setting.epoch;
+  if (contact) {
+    const std::uint16_t stamp = contact->internal_edges_stamp(setting.epoch);
+    if (memory.internal_edges_stamp != stamp) {
+      memory.internal_edges = contact->find_internal_edges(stamp);
+      memory.internal_edges_stamp = stamp;
+    }
   }
   return memory.internal_edges;
 }

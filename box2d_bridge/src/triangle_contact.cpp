@@ -103,13 +103,13 @@ TriangleContact* TriangleContact::ours(b2Contact* c) {
   return typeid(*c) == typeid(TriangleContact) ? static_cast<TriangleContact*>(c) : nullptr;
 }
 
-InternalEdges TriangleContact::find_internal_edges(std::uint8_t epoch) const {
+InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
   // Sharing is safe within one pair of bodies: what makes one of these contacts' masks stale
   // (a contact between the two bodies made or destroyed between steps) clears them all.
   std::optional<InternalEdges> a;
   std::optional<InternalEdges> b;
   for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-    if (&c == this || c.memory_.internal_edges_epoch != epoch) return true;
+    if (&c == this || c.memory_.internal_edges_stamp != stamp) return true;
     const InternalEdges m = c.memory_.internal_edges;
     if (!a && c.m_fixtureA == m_fixtureA) a = half(m, false);
     if (!a && c.m_fixtureB == m_fixtureA) a = half(m, true);

@@ -131,8 +131,8 @@ struct Config {
   /// collisions; edges shared by two bodies stay outline edges. A contact finds its two
   /// triangles' masks when the rule first needs them (its pair is not skipped), from the
   /// fixtures' bodies as they are then (the body's triangles near each one, from the world's
-  /// broad phase), and keeps them in its `ContactMemory`; it finds them again when a fixture near
-  /// it changed (`ContactMemory::internal_edges_epoch`). The other backends ignore it and never
+  /// broad phase), and keeps them in its `ContactMemory`; it finds them again after fixtures of
+  /// its world changed (`ContactMemory::internal_edges_stamp`). The other backends ignore it and never
   /// look. Off: the world is bit-identical to Box2D's own handling of each fixture alone, as the
   /// plug-in was without the rule.
   bool internal_edges = true;
@@ -195,15 +195,16 @@ struct ContactMemory {
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits,
   /// then B's), used while the installed backend applies the rule (`Config::internal_edges`). A
-  /// world's contact finds them itself (see `internal_edges_epoch`); a caller of
+  /// world's contact finds them itself (see `internal_edges_stamp`); a caller of
   /// `collide_polygons` sets them.
   InternalEdges internal_edges{};
-  /// A world's contact: the install its masks were found under (see `install`), 0 not yet. They
-  /// are found from the two fixtures' bodies as they are when the rule first needs them, and
-  /// again after another `install`, or after a contact between the same two bodies was made or
-  /// destroyed between steps (a fixture of one of them added, destroyed, moved, enabled or changed
-  /// type): the contact then sets this to 0.
-  std::uint8_t internal_edges_epoch = 0;
+  /// A world's contact: what its masks were found under, 0 not yet: the install (see `install`)
+  /// and the number of fixture proxies of the world (any fixture created or destroyed in the world
+  /// changes it), folded into 16 bits. They are found when the rule first needs them, from the two
+  /// fixtures' bodies as they are then, and again when the stamp no longer matches, or after a
+  /// contact between the same two bodies was made or destroyed between steps (a fixture of one of
+  /// them added, destroyed, moved, enabled or changed type): the contact then sets this to 0.
+  std::uint16_t internal_edges_stamp = 0;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
