@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
+#include "scenes/metrics.hpp"
 
 namespace dyop::scenes {
 
@@ -16,6 +17,19 @@ World::~World() {
 }
 
 void World::step() { world_.Step(time_step, velocity_iterations, position_iterations); }
+
+std::uint64_t state_hash(const std::vector<b2Body*>& bodies) {
+  Fnv1a hash;
+  for (const b2Body* b : bodies) {
+    hash.add(b->GetPosition().x);
+    hash.add(b->GetPosition().y);
+    hash.add(b->GetAngle());
+    hash.add(b->GetLinearVelocity().x);
+    hash.add(b->GetLinearVelocity().y);
+    hash.add(b->GetAngularVelocity());
+  }
+  return hash.value();
+}
 
 b2Body* World::create_body(const b2BodyDef& def) {
   b2Body* body = world_.CreateBody(&def);

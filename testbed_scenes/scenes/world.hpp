@@ -9,6 +9,7 @@
 
 #include <box2d/box2d.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace dyop::scenes {
@@ -91,6 +92,13 @@ b2Body* add_u_shape(World& world, const b2Vec2& position, float angle);
 /// triangle fixtures fanned from the centre.
 b2Body* add_star(World& world, const b2Vec2& position, float angle, float outer = 1.0f,
                  float inner = 0.45f);
+
+/// The FNV-1a hash of the bodies' state: each body's position, angle and velocities, as float
+/// bits, in the order given. Equal hashes: bit-identical worlds.
+std::uint64_t state_hash(const std::vector<b2Body*>& bodies);
+
+/// `state_hash` of `world`'s bodies in creation order (`SceneMetrics::hash`).
+inline std::uint64_t state_hash(const World& world) { return state_hash(world.bodies()); }
 
 /// True when the fixture is a triangle (a 3-vertex polygon): the pairs the plug-in answers.
 bool is_triangle(const b2Fixture* fixture);

@@ -88,18 +88,11 @@ SceneMetrics WorldScene::metrics() const {
   m.backend = name(runner_);
   m.seed = seed_;
   m.steps = steps_;
-  Fnv1a hash;
   for (const b2Body* b : world_->bodies()) {
     ++m.bodies;
     for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
       m.triangles += is_triangle(f);
     }
-    hash.add(b->GetPosition().x);
-    hash.add(b->GetPosition().y);
-    hash.add(b->GetAngle());
-    hash.add(b->GetLinearVelocity().x);
-    hash.add(b->GetLinearVelocity().y);
-    hash.add(b->GetAngularVelocity());
     if (b->GetType() == b2_dynamicBody) {
       // GetInertia is about the body origin; the energy wants it about the centre of mass.
       const double mass = b->GetMass();
@@ -110,7 +103,7 @@ SceneMetrics WorldScene::metrics() const {
       m.kinetic_energy_final += 0.5 * mass * v2 + 0.5 * inertia * w * w;
     }
   }
-  m.hash = hash.value();
+  m.hash = state_hash(*world_);
   m.triangle_pairs = updates_.triangles;
   m.contact_updates = updates_.contacts;
   if (runner_) {  // the plug-in's counters mean nothing when Box2D's own contact answers
