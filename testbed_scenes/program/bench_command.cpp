@@ -11,6 +11,7 @@
 #ifdef DYOP_WITH_BOX2D
 #include "report/rain_scaling_report.hpp"
 #include "report/stream_report.hpp"
+#include "report/thread_scaling_report.hpp"
 #endif
 
 namespace dyop::cli {
@@ -20,6 +21,7 @@ struct BenchArgs {
   bool quick = false;
   bool no_scaling = false;
   bool no_streams = false;
+  bool no_threads = false;
   std::string json;
   std::string out;
 };
@@ -32,6 +34,11 @@ constexpr int kQuickScalingSteps = 240;
 // structures already resting) and 3 timed passes, so that the section stays under a minute.
 constexpr int kQuickStreamSteps = 120;
 constexpr int kQuickStreamPasses = 3;
+// Worlds on threads: 4 s of the rain (falling, landing) per world, 3 runs of each runner; quick,
+// 1 s and one run (a few seconds in all).
+constexpr int kThreadSteps = 240;
+constexpr int kQuickThreadSteps = 60;
+constexpr int kQuickThreadRuns = 1;
 
 int run(const BenchArgs& args) {
   report::BenchOptions options;
@@ -52,6 +59,18 @@ int run(const BenchArgs& args) {
     tables << '\n';
     report::write_scaling_table(rain, tables);
     if (dir && dir->created()) sections = report::write_scaling_outputs(rain, *dir);
+  }
+  if (!args.no_threads) {
+    scenes::ThreadScalingOptions threads;
+    threads.steps = args.quick ? kQuickThreadSteps : kThreadSteps;
+    if (args.quick) threads.runs = kQuickThreadRuns;
+    const std::vector<scenes::ThreadScalingRecord> pool =
+        scenes::run_thread_scaling(threads, std::cerr);
+    tables << '\n';
+    report::write_thread_scaling_table(pool, threads.scene, tables);
+    if (dir && dir->created()) {
+      sections += report::write_thread_scaling_outputs(pool, threads.scene, *dir);
+    }
   }
   if (!args.no_streams) {
     scenes::StreamOptions streams;
@@ -89,17 +108,20 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "Run time against error of every method, with ratios to Box2D's narrow phase");
   cmd->add_flag("--quick", args->quick,
-                "Fewer timed passes (5 instead of 21), shorter scaling runs (4 s, not 10 s) and "
-                "contact streams (120 steps, not 600)");
+                "Fewer timed passes (5 instead of 21), shorter scaling runs (4 s, not 10 s), "
+                "worlds on threads (1 s, one run) and contact streams (120 steps, not 600)");
   cmd->add_flag("--no-scaling", args->no_scaling,
                 "Skip the rain scene's scaling runs (100 to 3000 triangles per backend)");
   cmd->add_flag("--no-streams", args->no_streams,
                 "Skip the contact streams (every Box2D scene's recorded narrow-phase calls, "
                 "replayed through every backend)");
+  cmd->add_flag("--no-threads", args->no_threads,
+                "Skip the worlds on threads (1, 2, 4 copies of the rain on as many threads, "
+                "dyop against Box2D's own contact)");
   cmd->add_option("--json", args->json, "Write the records as JSON to FILE, or '-' for stdout");
   cmd->add_option("--out", args->out,
-                  "Write report.md, bench.csv, bench.json, scaling.csv, streams.csv and the "
-                  "charts here");
+                  "Write report.md, bench.csv, bench.json, scaling.csv, threads.csv, streams.csv "
+                  "and the charts here");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
