@@ -104,8 +104,9 @@ TriangleContact* TriangleContact::ours(b2Contact* c) {
 }
 
 InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
-  // Sharing is safe within one pair of bodies: what makes one of these contacts' masks stale
-  // (a contact between the two bodies made or destroyed between steps) clears them all.
+  // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
+  // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
+  // the two bodies made or destroyed between steps) clears them all.
   std::optional<InternalEdges> a;
   std::optional<InternalEdges> b;
   for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
