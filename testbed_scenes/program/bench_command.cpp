@@ -34,11 +34,12 @@ constexpr int kQuickScalingSteps = 240;
 // structures already resting) and 3 timed passes, so that the section stays under a minute.
 constexpr int kQuickStreamSteps = 120;
 constexpr int kQuickStreamPasses = 3;
-// Worlds on threads: 4 s of the rain (falling, landing) per world, 3 runs of each runner; quick,
-// 1 s and one run (a few seconds in all).
-constexpr int kThreadSteps = 240;
-constexpr int kQuickThreadSteps = 60;
-constexpr int kQuickThreadRuns = 1;
+// Worlds on threads: 10 s of the rain per world (falling, landing, resting: about 0.7 s of wall
+// time per world), 5 runs of each runner, about 40 s in all; quick, 2 s and 3 runs (5 s).
+constexpr int kThreadSteps = 600;
+constexpr int kThreadRuns = 5;
+constexpr int kQuickThreadSteps = 120;
+constexpr int kQuickThreadRuns = 3;
 
 int run(const BenchArgs& args) {
   report::BenchOptions options;
@@ -63,7 +64,7 @@ int run(const BenchArgs& args) {
   if (!args.no_threads) {
     scenes::ThreadScalingOptions threads;
     threads.steps = args.quick ? kQuickThreadSteps : kThreadSteps;
-    if (args.quick) threads.runs = kQuickThreadRuns;
+    threads.runs = args.quick ? kQuickThreadRuns : kThreadRuns;
     const std::vector<scenes::ThreadScalingRecord> pool =
         scenes::run_thread_scaling(threads, std::cerr);
     tables << '\n';
@@ -109,7 +110,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       "bench", "Run time against error of every method, with ratios to Box2D's narrow phase");
   cmd->add_flag("--quick", args->quick,
                 "Fewer timed passes (5 instead of 21), shorter scaling runs (4 s, not 10 s), "
-                "worlds on threads (1 s, one run) and contact streams (120 steps, not 600)");
+                "worlds on threads (2 s, 3 runs) and contact streams (120 steps, not 600)");
   cmd->add_flag("--no-scaling", args->no_scaling,
                 "Skip the rain scene's scaling runs (100 to 3000 triangles per backend)");
   cmd->add_flag("--no-streams", args->no_streams,

@@ -21,8 +21,8 @@ namespace dyop::scenes {
 struct ThreadScalingOptions {
   std::vector<int> threads = {1, 2, 4};  ///< worlds, one per thread, per run
   std::string scene = "rain";            ///< a Box2D scene of the catalogue
-  int steps = 240;                       ///< steps of each world per run, at least 1
-  int runs = 3;                          ///< runs of each runner at each N, at least 1
+  int steps = 600;                       ///< steps of each world per run, at least 1
+  int runs = 5;                          ///< runs of each runner at each N, at least 1
   std::uint64_t seed = 0;                ///< every world's seed (the worlds are copies)
 };
 
