@@ -231,6 +231,62 @@ TEST(InternalEdges, BoxRestsOnTheFloorOfAHoleCutUnderItMidRun) {
   ASSERT_TRUE(uninstall().ok());
 }
 
+// A ground of two triangles, G (under a resting one-triangle body) and F, sharing one edge; F is
+// far from the body, so no contact of the body has F and nothing is made or destroyed between the
+// body and the ground when F goes. G's edge with F is internal while F is there (the pair runs
+// the rule), G is a lone triangle once F is destroyed (no more rule), and internal again once F is
+// created anew: the contact finds its masks again from the world's fixture count.
+TEST(InternalEdges, ContactsFollowANeighbourDestroyedAndCreatedFarFromThem) {
+  ASSERT_TRUE(install(Backend::Dyop, rule_on()).ok());
+  World world;
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  add_triangle(ground, {0, 0}, {0, -1}, {4, 0});  // G: its top edge from (0, 0) to (4, 0)
+  const b2Vec2 f_points[3] = {{0, 0}, {-4, -0.5f}, {0, -1}};  // F: G's left edge, and leftwards
+  b2Fixture* f = add_triangle(ground, f_points[0], f_points[1], f_points[2]);
+  b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(3.0f, 0.0f));
+  add_triangle(body, {-0.3f, 0}, {0.3f, 0}, {0, 0.3f}, kIce);  // on G, 2.7 m clear of F
+  const auto rule_pairs_over = [&](int steps) {
+    reset_stats();
+    for (int i = 0; i < steps; ++i) world.step();
+    EXPECT_GT(stats().triangles(Backend::Dyop), 0u);  // the body and G are evaluated throughout
+    return stats().internal_edge_pairs;
+  };
+  EXPECT_GT(rule_pairs_over(30), 0u);
+  ground->DestroyFixture(f);
+  EXPECT_EQ(rule_pairs_over(10), 0u);
+  add_triangle(ground, f_points[0], f_points[1], f_points[2]);
+  EXPECT_GT(rule_pairs_over(10), 0u);
+  EXPECT_NEAR(body->GetPosition().y, 0.0f, kSinkAllowed);
+  ASSERT_TRUE(uninstall().ok());
+}
+
+// The same two triangles, the body resting on G next to F, so that it has a contact with F too. F
+// is destroyed and a triangle added to the ground far away in the same pause between steps: the
+// world's fixture count ends where it was, so only the destroyed contact with F tells the body's
+// contact with G to find its masks again (G then shares no edge: no more rule).
+TEST(InternalEdges, ContactsNextToANeighbourReplacedElsewhereFindTheirMasksAgain) {
+  ASSERT_TRUE(install(Backend::Dyop, rule_on()).ok());
+  World world;
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  add_triangle(ground, {0, 0}, {0, -1}, {4, 0});
+  b2Fixture* f = add_triangle(ground, {0, 0}, {-4, -0.5f}, {0, -1});
+  b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(0.4f, 0.0f));
+  add_triangle(body, {-0.3f, 0}, {0.3f, 0}, {0, 0.3f}, kIce);  // within the fat boxes of F
+  for (int i = 0; i < 30; ++i) world.step();
+  reset_stats();
+  world.step();
+  EXPECT_GT(stats().internal_edge_pairs, 0u);
+  const int proxies = world->GetProxyCount();
+  ground->DestroyFixture(f);
+  add_triangle(ground, {10, 0}, {11, 0}, {10, 1});
+  ASSERT_EQ(world->GetProxyCount(), proxies);
+  reset_stats();
+  for (int i = 0; i < 10; ++i) world.step();
+  EXPECT_GT(stats().triangles(Backend::Dyop), 0u);
+  EXPECT_EQ(stats().internal_edge_pairs, 0u);
+  ASSERT_TRUE(uninstall().ok());
+}
+
 // The ground is extended between steps under a gliding box that already hangs over its end, by new
 // fixtures of the same body: the old end's side edge becomes internal and its top corner flat, and
 // the box glides on over the junction at its speed. A contact that kept its old masks would still
