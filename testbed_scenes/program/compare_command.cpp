@@ -1,5 +1,5 @@
-// `dyop compare`: the command (the run is scenes/compare, the report report/compare_report) and
-// its registration.
+// `dyop compare`: the command (the run is scenes/compare and report/compare_section's sections,
+// the report report/compare_report) and its registration.
 #include "program/compare_command.hpp"
 
 #include <fstream>
@@ -10,6 +10,7 @@
 
 #include "program/commands.hpp"
 #include "report/compare_report.hpp"
+#include "report/compare_section.hpp"
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "report/report_directory.hpp"
@@ -29,37 +30,24 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     err << "dyop compare: " << p.message << '\n';
     return exit_code_for({p});
   }
-  CompareRun run;
+  Comparison comparison;
   try {
-    run = run_compare(options, err);
+    comparison = run_comparison(options, err);
   } catch (const std::exception& e) {
     err << "dyop compare: " << e.what() << '\n';
     return exit_io_error;
   }
-  write_compare_table(run, out);
-  if (!run.in_world.empty()) {
-    out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
-    write_in_world_table(run.in_world, out);
+  write_compare_table(comparison.main, out);
+  for (const auto& section : comparison.sections) {
+    if (section->measured()) section->write_tables(out);
   }
-  if (!run.slide.empty()) {
-    out << "\nSliding over triangulated grounds (scene `slide`), Box2D's own contact against the "
-           "plug-in:\n\n";
-    write_slide_tables(run.slide, out);
-  }
-  if (!run.skips.empty()) {
-    out << "\nSkipping what a scene doesn't need:\n\n";
-    write_skip_tables(run, out);
-  }
-  if (run.paper) {
-    out << "\nThe paper's experiment (scene `paper`):\n\n";
-    write_paper_tables(*run.paper, out);
-  }
-  const std::vector<Problem> problems = write_report(run);
+  const std::vector<Problem> problems = write_report(comparison);
   for (const Problem& p : problems) {
     err << "dyop compare: " << (p.kind == ProblemKind::ChartNotDrawn ? "warning: " : "")
         << p.message << '\n';
   }
-  out << "\nreport: " << options.out_dir << "/report.md (run took " << fmt("%.1f", run.seconds)
+  out << "\nreport: " << options.out_dir << "/report.md (run took "
+      << fmt("%.1f", comparison.seconds)
       << " s)\n";
   return exit_code_for(problems);
 }

@@ -1,4 +1,5 @@
-// `dyop compare`'s charts: gnuplot scripts and their data files, drawn as SVG.
+// `dyop compare`'s main charts (time per method, time against error): gnuplot scripts and their
+// data files, drawn as SVG. Each section draws its own.
 #include <algorithm>
 #include <limits>
 #include <sstream>
@@ -19,12 +20,13 @@ constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 const char* const kTerminal = "svg size 1000,520 dynamic font 'sans,11' background '#ffffff'";
 
-class Charts {
+class MainCharts {
  public:
-  explicit Charts(ReportFiles& files) : files_(files), dir_(files.dir), run_(files.run) {}
+  explicit MainCharts(ReportFiles& files)
+      : files_(files), dir_(files.dir), run_(files.comparison.main) {}
 
   void chart(const std::string& name, const std::string& terminal, const std::string& body) {
-    if (dir_.chart(name, terminal, body)) files_.charts.push_back(name + ".svg");
+    files_.charts.draw(dir_, name, terminal, body);
   }
 
   void charts() {
@@ -79,113 +81,6 @@ class Charts {
     }
     scatter << '\n';
     chart("time_vs_error", kTerminal, scatter.str());
-
-    if (!run_.in_world.empty()) in_world_chart();
-    if (!run_.slide.empty()) slide_chart();
-    if (!run_.paper) return;
-    dir_.write("paper_figure7.dat", [&](std::ostream& o) { write_figure7_data(run_, o, ' '); });
-    std::ostringstream fig;
-    fig << "set title 'The paper''s Figure 7 rebuilt: time to find the penetration depths of "
-           "each triangle type over "
-        << run_.paper->steps << " steps'\n"
-        << "set xlabel 'triangle type'\nset ylabel 'µs for all steps (median of "
-        << run_.paper->repetitions << " runs)'\nset xtics 1\nset xrange [0.5:10.5]\n"
-        << "set yrange [0:*]\nset grid ytics\nset key outside right top\n"
-        << "plot for [i=4:" << 3 + run_.paper->methods.size() << "] "
-        << dir_.quoted("paper_figure7.dat")
-        << " using 1:i with linespoints lw 2 pt 7 title columnheader(i)\n";
-    chart("paper_figure7", kTerminal, fig.str());
-  }
-
-  // Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
-  // bar per backend, narrow phase above and step below.
-  void in_world_chart() {
-    std::vector<std::string> backends;
-    for (const InWorldRatio& r : run_.in_world) {
-      if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) {
-        backends.push_back(r.backend);
-      }
-    }
-    auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
-      for (const InWorldRatio& r : run_.in_world) {
-        if (r.scene == scene && r.backend == backend) {
-          return step ? r.step_ratio() : r.narrowphase_ratio();
-        }
-      }
-      return kMissing;
-    };
-    for (const bool step : {false, true}) {
-      dir_.write(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
-        o << "scene";
-        for (const std::string& b : backends) o << ' ' << b;
-        o << '\n';
-        for (const std::string& s : scene_names(run_)) {
-          if (s == "paper") continue;
-          std::vector<double> ratios;
-          for (const std::string& b : backends) ratios.push_back(ratio(s, b, step));
-          write_data_line(o, s, ratios);
-        }
-      });
-    }
-    std::ostringstream bars;
-    bars << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
-            "Box2D''s own contact (below 1: the plug-in is faster)'\n"
-         << "set style data histograms\nset style histogram clustered gap 1\n"
-         << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
-         << "set xtics nomirror font ',9'\nset key outside right top\n"
-         << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
-    for (const bool step : {false, true}) {
-      bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
-           << "'\nset ylabel '× " << box2d_own << "'\n"
-           << "plot for [i=2:" << backends.size() + 1 << "] "
-           << dir_.quoted(step ? "inworld_step.dat" : "inworld_collide.dat")
-           << " using i:xtic(1) title columnheader(i)\n";
-    }
-    bars << "unset multiplot\n";
-    chart("inworld", "svg size 1000,760 dynamic font 'sans,11' background '#ffffff'", bars.str());
-  }
-
-  // The sliders' paths (height above their start against distance along x), one panel per
-  // runner on one height scale: a ghost collision is a hop and a path cut short.
-  void slide_chart() {
-    double low = 0, high = 0;
-    dir_.write("slide_paths.dat", [&](std::ostream& o) {
-      for (const SlideRun& r : run_.slide) {
-        for (const SliderPath& p : r.paths) {
-          o << "# " << r.metrics.backend << ": " << p.body << " on " << p.ground
-            << ": x height\n";
-          for (std::size_t i = 0; i < p.x.size(); ++i) {
-            o << fmt("%.6g", p.x[i]) << ' ' << fmt("%.6g", p.height[i]) << '\n';
-            low = std::min(low, p.height[i]);
-            high = std::max(high, p.height[i]);
-          }
-          o << "\n\n";
-        }
-      }
-    });
-    const std::size_t panels = run_.slide.size();
-    std::ostringstream plot;
-    plot << "set multiplot layout " << panels << ",1 title 'Scene slide: each slider''s height "
-            "above its start against the distance it travelled (one panel per runner)'\n"
-         << "set grid\nset key outside right top font ',9'\nset ylabel 'height (m)'\n"
-         << "set yrange [" << fmt("%.4g", low - 0.01) << ':' << fmt("%.4g", high + 0.01) << "]\n"
-         << "set xrange [-1:*]\n";
-    int index = 0;
-    for (const SlideRun& r : run_.slide) {
-      plot << "set title '" << r.metrics.backend << "'\n"
-           << (&r == &run_.slide.back() ? "set xlabel 'distance along x (m)'\n" : "") << "plot ";
-      for (std::size_t k = 0; k < r.paths.size(); ++k, ++index) {
-        plot << (k ? ", " : "") << dir_.quoted("slide_paths.dat") << " index " << index
-             << " using 1:2 with lines lw 1.5 title '" << r.paths[k].body << " on "
-             << r.paths[k].ground << "'";
-      }
-      plot << '\n';
-    }
-    plot << "unset multiplot\n";
-    chart("slide_paths",
-          "svg size 1000," + std::to_string(120 + 230 * panels) +
-              " dynamic font 'sans,11' background '#ffffff'",
-          plot.str());
   }
 
  private:
@@ -196,6 +91,6 @@ class Charts {
 
 }  // namespace
 
-void draw_charts(ReportFiles& files) { Charts(files).charts(); }
+void draw_charts(ReportFiles& files) { MainCharts(files).charts(); }
 
 }  // namespace dyop::report::detail

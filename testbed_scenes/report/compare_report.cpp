@@ -1,8 +1,12 @@
-// `dyop compare`'s report directory: report.md, the CSVs behind it, the charts and snapshots.
+// `dyop compare`'s report directory: report.md, compare.csv, the charts, the snapshots, and each
+// section's files.
 #include "report/compare_report.hpp"
 
+#include <optional>
+
 #include "report/compare_report_files.hpp"
-#include "report/compare_tables.hpp"
+#include "report/format.hpp"
+#include "scenes/metrics_io.hpp"
 #include "scenes/svg.hpp"
 
 namespace dyop::report {
@@ -26,34 +30,26 @@ const SceneMetrics* row(const CompareRun& run, const std::string& scene,
 
 }  // namespace detail
 
-std::vector<Problem> write_report(const scenes::CompareRun& run) {
-  detail::ReportFiles files{run, ReportDirectory(run.options.out_dir), {}};
+std::vector<Problem> write_report(const Comparison& comparison) {
+  const scenes::CompareRun& run = comparison.main;
+  detail::ReportFiles files{comparison, ReportDirectory(run.options.out_dir), {}};
   ReportDirectory& dir = files.dir;
   if (!dir.created()) return dir.problems();
-  dir.write("compare.csv", [&](std::ostream& o) { detail::write_compare_csv(run, o); });
-  if (!run.skips.empty()) {
-    dir.write("skips.csv", [&](std::ostream& o) { detail::write_skips_csv(run, o); });
-  }
-  if (!run.in_world.empty()) {
-    dir.write("inworld.csv", [&](std::ostream& o) { write_in_world_csv(run.in_world, o); });
-  }
-  if (run.paper) {
-    dir.write("paper_figure7.csv", [&](std::ostream& o) { detail::write_figure7_data(run, o, ','); });
-    dir.write("paper_methods.csv",
-              [&](std::ostream& o) { detail::write_paper_methods_csv(run, o); });
-  }
+  dir.write("compare.csv", [&](std::ostream& o) {
+    o << scenes::csv_header() << ",ratio_to_box2d\n";
+    for (const scenes::SceneMetrics& m : run.rows) {
+      const std::optional<double> r = scenes::ratio_to_box2d(run, m);
+      o << scenes::csv_row(m) << ',' << (r ? fmt("%.6g", *r) : "") << '\n';
+    }
+  });
   for (const auto& snapshot : run.snapshots) {  // not a structured binding: C++17 lambdas
     dir.write("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
               [&](std::ostream& o) { scenes::write_svg(snapshot.second, o); });
   }
-  if (!run.slide.empty()) {
-    dir.write("slide.csv", [&](std::ostream& o) { detail::write_slide_csv(run, o); });
-  }
-  for (const scenes::SlideRun& r : run.slide) {
-    dir.write("slide_" + r.metrics.backend + ".svg",
-              [&](std::ostream& o) { scenes::write_svg(r.final_state, o); });
-  }
   detail::draw_charts(files);
+  for (const auto& s : comparison.sections) {
+    if (s->measured()) s->write_files(dir, files.charts);
+  }
   dir.write("report.md", [&](std::ostream& o) { detail::write_markdown(files, o); });
   return dir.problems();
 }

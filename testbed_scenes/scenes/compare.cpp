@@ -1,9 +1,6 @@
 #include "scenes/compare.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <ostream>
 
 #include "scenes/progress.hpp"
@@ -13,16 +10,13 @@ namespace dyop::scenes {
 namespace {
 
 using detail::fixed;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 template <std::size_t N>
 bool listed(const std::array<const char*, N>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
+
+}  // namespace
 
 // The configurations one after the other, repetition after repetition: the machines are shared,
 // so what is compared is measured as close together in time as possible.
@@ -51,8 +45,6 @@ SkipMeasurement measure_skips(const SceneInfo& s, box2d::Backend b, int steps,
   return m;
 }
 
-}  // namespace
-
 int skip_repetitions(bool quick) { return quick ? 1 : 3; }
 
 bool is_skip_target(const std::string& scene, const std::string& backend) {
@@ -76,10 +68,7 @@ std::vector<box2d::Backend> in_world_backends(bool quick) {
           box2d::Backend::Box2D};
 }
 
-CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
-  CompareRun run;
-  run.options = options;
-  const auto start = Clock::now();
+std::vector<const SceneInfo*> selected_scenes(const CompareOptions& options) {
   std::vector<const SceneInfo*> scenes;
   for (const SceneInfo& s : scene_catalog()) {
     if (options.scenes.empty() ||
@@ -87,19 +76,20 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
       scenes.push_back(&s);
     }
   }
+  return scenes;
+}
+
+CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
+                       const std::function<double()>& elapsed) {
+  CompareRun run;
+  run.options = options;
+  const std::vector<const SceneInfo*> scenes = selected_scenes(options);
   const int total = static_cast<int>(scenes.size()) * box2d::backend_count;
   int done = 0;
   for (const SceneInfo* s : scenes) {
     const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
-    if (std::string(s->name) == "paper") {
-      const auto t = Clock::now();
-      const int reps = paper_repetitions(options.quick);
-      run.paper = paper::run_experiment(options.seed, steps, reps);
-      progress << "[paper] Figure 7 experiment, " << steps << " steps, " << reps
-               << " repetitions of 8 methods: " << fixed(seconds_since(t), 1) << " s\n";
-    }
     for (box2d::Backend b : box2d::all_backends) {
-      const auto t = Clock::now();
+      const double start = elapsed();
       Drawing final_state;
       const bool snapshot = b == box2d::Backend::Dyop;
       run.rows.push_back(run_scene(s->name, b, steps, options.seed, options.skips,
@@ -107,67 +97,11 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress) {
       if (snapshot) run.snapshots.emplace_back(s->name, std::move(final_state));
       ++done;
       progress << '[' << done << '/' << total << "] " << s->name << " / " << box2d::name(b) << ", "
-               << steps << " steps: " << fixed(seconds_since(t), 2) << " s (total "
-               << fixed(seconds_since(start), 1) << " s)\n"
+               << steps << " steps: " << fixed(elapsed() - start, 2) << " s (total "
+               << fixed(elapsed(), 1) << " s)\n"
                << std::flush;
     }
   }
-
-  for (const SceneInfo* s : scenes) {
-    if (std::string(s->name) != "slide") continue;
-    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
-    for (const Runner& r : slide_runners(options.quick)) {
-      const auto t = Clock::now();
-      run.slide.push_back(run_slide(r, steps, options.seed, options.skips));
-      progress << "[slide] " << name(r) << ", " << steps << " steps, paths recorded: "
-               << fixed(seconds_since(t), 2) << " s (total " << fixed(seconds_since(start), 1)
-               << " s)\n"
-               << std::flush;
-    }
-  }
-
-  const int reps = skip_repetitions(options.quick);
-  std::vector<const SceneInfo*> skip_runs;
-  for (const SceneInfo* s : scenes) {
-    if (listed(skip_scenes, s->name)) skip_runs.push_back(s);
-  }
-  const int skip_total = static_cast<int>(skip_runs.size() * skip_backends.size());
-  int skip_done = 0;
-  for (const SceneInfo* s : skip_runs) {
-    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
-    for (box2d::Backend b : skip_backends) {
-      const auto t = Clock::now();
-      run.skips.push_back(measure_skips(*s, b, steps, options));
-      ++skip_done;
-      progress << "[skips " << skip_done << '/' << skip_total << "] " << s->name << " / "
-               << box2d::name(b) << ", " << steps << " steps, none then "
-               << skip_argument(options.skips)
-               << (run.skips.back().alone.empty() ? "" : " then each skip alone")
-               << (reps > 1 ? ", " + std::to_string(reps) + " times" : "") << ": "
-               << fixed(seconds_since(t), 2) << " s (total " << fixed(seconds_since(start), 1)
-               << " s)\n"
-               << std::flush;
-    }
-  }
-  const int in_world_reps = in_world_repetitions(options.quick);
-  for (const SceneInfo* s : scenes) {
-    if (std::string(s->name) == "paper") continue;  // no Box2D world
-    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
-    for (box2d::Backend b : in_world_backends(options.quick)) {
-      const auto t = Clock::now();
-      run.in_world.push_back(measure_in_world(s->name, b, in_world_reps, [&](const Runner& r) {
-        return run_scene(s->name, r, steps, options.seed, options.skips);
-      }));
-      const InWorldRatio& m = run.in_world.back();
-      progress << "[in-world] " << s->name << " / " << box2d::name(b) << " against "
-               << box2d_own << ", " << in_world_reps << " times each: narrow phase "
-               << fixed(m.narrowphase_ratio(), 2) << "x, step " << fixed(m.step_ratio(), 2)
-               << "x, " << fixed(seconds_since(t), 2) << " s (total "
-               << fixed(seconds_since(start), 1) << " s)\n"
-               << std::flush;
-    }
-  }
-  run.seconds = seconds_since(start);
   return run;
 }
 

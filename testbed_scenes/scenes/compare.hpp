@@ -1,15 +1,15 @@
 #pragma once
 /// \file
-/// The run of all scenes behind `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`
-/// (`program/compare_command.hpp`): every scene under every backend, one table with the scene
-/// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, the
-/// paper's Figure-7 experiment, what skipping saves (`skip_scenes` with every skip off and on),
-/// and the `slide` scene under Box2D's own contact and the plug-in side by side (`slide_run.hpp`).
-/// The tables are `report/compare_tables.hpp`'s; the report directory (`report.md`, the CSVs
-/// behind it, gnuplot charts and a snapshot of each scene) is written by
-/// `report/compare_report.hpp`.
+/// The main run behind `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`
+/// (`program/compare_command.hpp`): every scene under every backend, for one table with the scene
+/// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, and the
+/// experiments of its sections: what skipping saves (`skip_scenes` with every skip off and on),
+/// in-world timing, the paper's Figure-7 experiment and the `slide` scene side by side
+/// (`report/compare_section.hpp` runs and writes each section; `report/compare_report.hpp`
+/// writes the report directory).
 
 #include <array>
+#include <functional>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -19,8 +19,7 @@
 
 #include "scenes/in_world.hpp"
 #include "scenes/metrics.hpp"
-#include "scenes/paper.hpp"
-#include "scenes/slide_run.hpp"
+#include "scenes/scene.hpp"
 #include "scenes/svg.hpp"
 
 namespace dyop::scenes {
@@ -66,6 +65,14 @@ int skip_repetitions(bool quick);
 
 /// One scene and backend run with every skip off, then with skips on, then (target) each skip
 /// alone; the repetitions interleaved so that what is compared is measured close in time.
+struct SkipMeasurement;
+
+/// Scene `s` under backend `b` for `steps`, with every skip off, with `options.skips`, and (target)
+/// each skip alone, `skip_repetitions` times interleaved; each figure from the repetition with the
+/// least narrow-phase time.
+SkipMeasurement measure_skips(const SceneInfo& s, box2d::Backend b, int steps,
+                              const CompareOptions& options);
+
 struct SkipMeasurement {
   SceneMetrics off;  ///< `box2d::Config::none()`
   SceneMetrics on;   ///< `CompareOptions::skips`
@@ -86,24 +93,21 @@ double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off);
 /// `lin-canny` (warm-started) and `dyop-fast` (approximate), as `box2d::Config` says.
 bool skips_keep_the_answer(const std::string& backend);
 
-/// What a comparative run produced.
+/// What the main run produced.
 struct CompareRun {
   CompareOptions options;
   std::vector<SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
-  /// `skip_scenes` (those selected) by `skip_backends`, in that order.
-  std::vector<SkipMeasurement> skips;
-  /// Every Box2D scene selected by `in_world_backends`, against Box2D's own contact.
-  std::vector<InWorldRatio> in_world;
-  /// When `slide` was selected: it under each of `slide_runners`, with `CompareOptions::skips`.
-  std::vector<SlideRun> slide;
-  std::optional<paper::Experiment> paper;                  ///< when the paper scene was run
   std::vector<std::pair<std::string, Drawing>> snapshots;  ///< per scene: `dyop`'s final state
-  double seconds = 0;                                      ///< wall time of the whole run
 };
 
-/// Runs it all, one progress line per scene and backend on `progress`. Throws what the scenes
-/// throw (a refused installation).
-CompareRun run_compare(const CompareOptions& options, std::ostream& progress);
+/// The scenes `options` selects, in catalogue order.
+std::vector<const SceneInfo*> selected_scenes(const CompareOptions& options);
+
+/// Runs every scene selected under every backend, one progress line per scene and backend on
+/// `progress` (`elapsed`: seconds since the whole run started, for the lines' totals). Throws
+/// what the scenes throw (a refused installation).
+CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
+                       const std::function<double()>& elapsed);
 
 /// `m`'s narrow-phase time per pair over `box2d`'s for the same scene in `run` (none if absent).
 std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& m);

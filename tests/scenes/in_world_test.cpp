@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
-#include "report/compare_tables.hpp"
+#include "report/compare_in_world.hpp"
 #include "scenes/compare.hpp"
 #include "scenes/in_world.hpp"
 #include "scenes/scene.hpp"
@@ -69,21 +69,24 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
   options.steps = 90;  // every stack has landed: contacts on both sides
   options.scenes = {"paper", "stack", "mixed"};
   std::ostringstream progress;
-  const CompareRun run = run_compare(options, progress);
+  const report::Comparison comparison = report::run_comparison(options, progress);
+  const report::InWorldSection* section = comparison.section<report::InWorldSection>();
+  ASSERT_NE(section, nullptr);
+  const std::vector<InWorldRatio>& rows = section->rows();
   const std::vector<box2d::Backend> backends = in_world_backends(true);
-  ASSERT_EQ(run.in_world.size(), 2 * backends.size()) << "no row for paper (no Box2D world)";
-  for (const InWorldRatio& r : run.in_world) {
+  ASSERT_EQ(rows.size(), 2 * backends.size()) << "no row for paper (no Box2D world)";
+  for (const InWorldRatio& r : rows) {
     EXPECT_TRUE(r.scene == "stack" || r.scene == "mixed") << r.scene;
     EXPECT_GT(r.own.narrowphase_ms, 0);
     EXPECT_GT(r.plugin.step_ms, 0);
   }
   std::ostringstream table, csv;
-  report::write_in_world_table(run.in_world, table);
-  report::write_in_world_csv(run.in_world, csv);
+  report::write_in_world_table(rows, table);
+  report::write_in_world_csv(rows, csv);
   EXPECT_NE(table.str().find("| mixed | dyop |"), std::string::npos) << table.str();
   const std::string text = csv.str();
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
-            static_cast<long>(run.in_world.size()) + 1);
+            static_cast<long>(rows.size()) + 1);
   EXPECT_EQ(text.rfind("scene,backend,steps,repetitions,narrowphase_ms_own", 0), 0u);
 }
 

@@ -1,0 +1,156 @@
+// `dyop compare`'s in-world section: its runs, table, CSV, chart and Markdown.
+#include "report/compare_in_world.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "report/format.hpp"
+#include "report/gnuplot.hpp"
+#include "scenes/progress.hpp"
+#include "scenes/scene.hpp"
+
+namespace dyop::report {
+namespace {
+
+using scenes::InWorldRatio;
+
+// A missing figure in a chart's data file (gnuplot's missing value).
+constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+void write_in_world_table(const std::vector<InWorldRatio>& rows, std::ostream& out) {
+  out << "| scene | backend | steps | runs | narrow phase ms own | narrow phase ms | × own | "
+         "step ms own | step ms | × own | contact updates own / plug-in |\n"
+         "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+  for (const InWorldRatio& r : rows) {
+    out << "| " << r.scene << " | " << r.backend << " | " << r.steps << " | " << r.repetitions
+        << " | " << fmt("%.2f", r.own.narrowphase_ms) << " | " << fmt("%.2f", r.plugin.narrowphase_ms)
+        << " | " << fmt("%.2f", r.narrowphase_ratio()) << " | " << fmt("%.1f", r.own.step_ms)
+        << " | " << fmt("%.1f", r.plugin.step_ms) << " | " << fmt("%.2f", r.step_ratio()) << " | "
+        << r.own.contact_updates << " / " << r.plugin.contact_updates << " |\n";
+  }
+}
+
+void write_in_world_csv(const std::vector<InWorldRatio>& rows, std::ostream& out) {
+  out << "scene,backend,steps,repetitions,narrowphase_ms_own,narrowphase_ms,narrowphase_ratio,"
+         "step_ms_own,step_ms,step_ratio,step_ms_median_own,step_ms_median,contact_updates_own,"
+         "contact_updates\n";
+  for (const InWorldRatio& r : rows) {
+    out << r.scene << ',' << r.backend << ',' << r.steps << ',' << r.repetitions << ','
+        << fmt("%.6g", r.own.narrowphase_ms) << ',' << fmt("%.6g", r.plugin.narrowphase_ms) << ','
+        << fmt("%.6g", r.narrowphase_ratio()) << ',' << fmt("%.6g", r.own.step_ms) << ','
+        << fmt("%.6g", r.plugin.step_ms) << ',' << fmt("%.6g", r.step_ratio()) << ','
+        << fmt("%.6g", r.own.step_ms_median) << ',' << fmt("%.6g", r.plugin.step_ms_median) << ','
+        << r.own.contact_updates << ',' << r.plugin.contact_updates << '\n';
+  }
+}
+
+void InWorldSection::run(const SectionContext& c) {
+  using scenes::detail::fixed;
+  quick_ = c.options.quick;
+  const int reps = scenes::in_world_repetitions(c.options.quick);
+  for (const scenes::SceneInfo* s : c.scenes) {
+    if (std::string(s->name) == "paper") continue;  // no Box2D world
+    const int steps = c.steps(*s);
+    for (box2d::Backend b : scenes::in_world_backends(c.options.quick)) {
+      const double start = c.elapsed();
+      rows_.push_back(
+          scenes::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
+            return scenes::run_scene(s->name, r, steps, c.options.seed, c.options.skips);
+          }));
+      const InWorldRatio& m = rows_.back();
+      c.progress << "[in-world] " << s->name << " / " << box2d::name(b) << " against "
+                 << scenes::box2d_own << ", " << reps << " times each: narrow phase "
+                 << fixed(m.narrowphase_ratio(), 2) << "x, step " << fixed(m.step_ratio(), 2)
+                 << "x, " << fixed(c.elapsed() - start, 2) << " s (total "
+                 << fixed(c.elapsed(), 1) << " s)\n"
+                 << std::flush;
+    }
+  }
+}
+
+void InWorldSection::write_tables(std::ostream& out) const {
+  out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
+  write_in_world_table(rows_, out);
+}
+
+// Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
+// bar per backend, narrow phase above and step below.
+void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
+  dir.write("inworld.csv", [&](std::ostream& o) { write_in_world_csv(rows_, o); });
+  std::vector<std::string> backends;
+  std::vector<std::string> scene_order;
+  for (const InWorldRatio& r : rows_) {
+    if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) {
+      backends.push_back(r.backend);
+    }
+    if (scene_order.empty() || scene_order.back() != r.scene) scene_order.push_back(r.scene);
+  }
+  auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
+    for (const InWorldRatio& r : rows_) {
+      if (r.scene == scene && r.backend == backend) {
+        return step ? r.step_ratio() : r.narrowphase_ratio();
+      }
+    }
+    return kMissing;
+  };
+  for (const bool step : {false, true}) {
+    dir.write(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
+      o << "scene";
+      for (const std::string& b : backends) o << ' ' << b;
+      o << '\n';
+      for (const std::string& s : scene_order) {
+        std::vector<double> ratios;
+        for (const std::string& b : backends) ratios.push_back(ratio(s, b, step));
+        write_data_line(o, s, ratios);
+      }
+    });
+  }
+  std::ostringstream bars;
+  bars << "set multiplot layout 2,1 title 'In the world: time with the plug-in over time with "
+          "Box2D''s own contact (below 1: the plug-in is faster)'\n"
+       << "set style data histograms\nset style histogram clustered gap 1\n"
+       << "set style fill solid 0.85 border -1\nset grid ytics\nset yrange [0:*]\n"
+       << "set xtics nomirror font ',9'\nset key outside right top\n"
+       << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
+  for (const bool step : {false, true}) {
+    bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
+         << "'\nset ylabel '× " << scenes::box2d_own << "'\n"
+         << "plot for [i=2:" << backends.size() + 1 << "] "
+         << dir.quoted(step ? "inworld_step.dat" : "inworld_collide.dat")
+         << " using i:xtic(1) title columnheader(i)\n";
+  }
+  bars << "unset multiplot\n";
+  charts.draw(dir, "inworld", "svg size 1000,760 dynamic font 'sans,11' background '#ffffff'",
+              bars.str());
+}
+
+void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const {
+  o << "## In the world, against Box2D's own contact\n\n"
+    << "What a user who installs the plug-in feels: each Box2D scene runs under Box2D's own "
+       "contact with the plug-in **not installed** (`"
+    << scenes::box2d_own << "`) and under the backend, alternately (own, backend, own, backend, "
+    << "...; " << scenes::in_world_repetitions(quick_)
+    << " runs of each) in this process, same seed and steps as the table above. Each side's "
+       "figure is the median over its runs of the narrow phase (`b2Profile::collide`, summed "
+       "over steps 2..N) and of the whole step (`b2World::Step`'s wall time, summed over the "
+       "same steps: the solver and the time-of-impact pass included). **× own** is the "
+       "backend's figure over Box2D's own: below 1 the plug-in is faster. The worlds evolve "
+       "alike but not bit for bit (`box2d` excepted), so each side's contact updates are "
+       "given. Machine: "
+    << std::thread::hardware_concurrency()
+    << " hardware threads; ratios move between machines of one kind, name the machine with "
+       "them.\n\n";
+  write_in_world_table(rows_, o);
+  o << '\n';
+  charts.image(o, "inworld", "narrow-phase and step time against Box2D's own contact");
+}
+
+std::string InWorldSection::files() const {
+  return "`inworld.csv` (every scene and backend against Box2D's own contact)";
+}
+
+}  // namespace dyop::report

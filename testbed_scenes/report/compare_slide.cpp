@@ -1,0 +1,194 @@
+// `dyop compare`'s slide section: the `slide` scene under Box2D's own contact and the plug-in's
+// backends (`scenes/slide_run.hpp`), side by side: tables, CSV, the sliders' paths, final states.
+#include <sstream>
+
+#include "report/compare_section.hpp"
+#include "report/format.hpp"
+#include "scenes/progress.hpp"
+#include "scenes/scene.hpp"
+#include "scenes/slide_run.hpp"
+
+namespace dyop::report {
+namespace {
+
+using scenes::SlideRun;
+
+std::string percent(double fraction) { return fmt("%.1f", 100 * fraction) + " %"; }
+
+class SlideSection : public CompareSection {
+ public:
+  void run(const SectionContext& c) override {
+    using scenes::detail::fixed;
+    internal_edges_ = c.options.skips.internal_edges;
+    for (const scenes::SceneInfo* s : c.scenes) {
+      if (std::string(s->name) != "slide") continue;
+      const int steps = c.steps(*s);
+      for (const scenes::Runner& r : scenes::slide_runners(c.options.quick)) {
+        const double start = c.elapsed();
+        runs_.push_back(scenes::run_slide(r, steps, c.options.seed, c.options.skips));
+        c.progress << "[slide] " << scenes::name(r) << ", " << steps << " steps, paths recorded: "
+                   << fixed(c.elapsed() - start, 2) << " s (total " << fixed(c.elapsed(), 1)
+                   << " s)\n"
+                   << std::flush;
+      }
+    }
+  }
+
+  bool measured() const override { return !runs_.empty(); }
+
+  void write_tables(std::ostream& out) const override {
+    out << "\nSliding over triangulated grounds (scene `slide`), Box2D's own contact against the "
+           "plug-in:\n\n";
+    tables(out);
+  }
+
+  void write_files(ReportDirectory& dir, Charts& charts) const override {
+    dir.write("slide.csv", [&](std::ostream& o) { csv(o); });
+    for (const SlideRun& r : runs_) {
+      dir.write("slide_" + r.metrics.backend + ".svg",
+                [&](std::ostream& o) { scenes::write_svg(r.final_state, o); });
+    }
+    paths_chart(dir, charts);
+  }
+
+  void write_markdown(std::ostream& o, const Charts& charts) const override {
+    o << "## Sliding over triangulated grounds (scene `slide`)\n\n"
+      << "Flat grounds whose top is made of triangle fixtures of one static body have internal "
+         "edges (shared by two of its triangles); Box2D collides each fixture alone and bodies "
+         "sliding over them trip (ghost collisions). One lane per slider: a frictionless box of "
+         "two triangles launched at 6 m/s on a one-piece ground (two large triangles: what a "
+         "glide is), on 1 m and 0.25 m square cells split along a diagonal and on 0.25 m cells "
+         "split in 4 around their centre (fan); a frictionless L of six triangles at 6 m/s on "
+         "the 0.25 m grounds; a 16-sided wheel (friction 0.6) rolling at 1.8 m/s on the "
+         "one-piece ground and on 0.25 m diagonal cells (a polygon loses speed at each vertex: "
+         "its one-piece travel is its yardstick); a box (friction 0.6) resting across a junction "
+         "of two 1 m cells. Same seed and steps for every runner; `"
+      << scenes::box2d_own << "` is Box2D's own contact (the plug-in not installed); the plug-in's "
+      << "backends ran with `Config::internal_edges` " << (internal_edges_ ? "**on**" : "**off**")
+      << " (the rule that never pushes along an internal edge).\n\n"
+      << "- **vertical speed**, **angular speed**: largest |v_y| and |ω| over the run of the "
+         "sliding (not rolling) bodies (a glide: 0).\n"
+      << "- **travel**: distance along x over launch speed × time (a frictionless glide: "
+         "100 %); **smallest travel**: over the sliding bodies.\n"
+      << "- **resting box jitter**: its largest displacement from where it was after the first "
+         "second (m).\n\n";
+    tables(o);
+    o << '\n';
+    charts.image(o, "slide_paths", "each slider's height against distance travelled, per runner");
+    o << "Final states side by side (lanes top to bottom in the order of the table above):\n\n|";
+    for (const SlideRun& r : runs_) o << ' ' << r.metrics.backend << " |";
+    o << "\n|";
+    for (std::size_t i = 0; i < runs_.size(); ++i) o << "---|";
+    o << "\n|";
+    for (const SlideRun& r : runs_) {
+      o << " ![slide, " << r.metrics.backend << "](slide_" << r.metrics.backend << ".svg) |";
+    }
+    o << "\n\n";
+  }
+
+  std::string files() const override {
+    return "`slide.csv` (every slider under every runner), `slide_*.svg` (final states)";
+  }
+
+ private:
+  // Per runner, the sliding bodies' largest speeds, their smallest travel and the resting box's
+  // jitter; then per slider, each runner's figures.
+  void tables(std::ostream& out) const {
+    out << "| runner | largest vertical speed (m/s) | largest angular speed (rad/s) | smallest "
+           "travel | resting box jitter (m) |\n|---|--:|--:|--:|--:|\n";
+    for (const SlideRun& r : runs_) {
+      const scenes::SceneMetrics& m = r.metrics;
+      if (!m.slide) continue;
+      out << "| " << m.backend << " | " << fmt("%.4f", m.slide->max_vertical_speed) << " | "
+          << fmt("%.4f", m.slide->max_angular_speed) << " | " << percent(m.slide->min_travel)
+          << " | " << (m.top_displacement ? metres(*m.top_displacement) : "n/a") << " |\n";
+    }
+    if (runs_.empty() || !runs_.front().metrics.slide) return;
+    out << "\n| slider |";
+    for (const SlideRun& r : runs_) out << ' ' << r.metrics.backend << " |";
+    out << "\n|---|";
+    for (std::size_t i = 0; i < runs_.size(); ++i) out << "---|";
+    out << '\n';
+    const std::vector<scenes::SliderFigures>& sliders = runs_.front().metrics.slide->sliders;
+    for (std::size_t k = 0; k < sliders.size(); ++k) {
+      out << "| " << sliders[k].body << " on " << sliders[k].ground
+          << (sliders[k].rolling ? " (rolling)" : "") << " |";
+      for (const SlideRun& r : runs_) {
+        const scenes::SliderFigures& f = r.metrics.slide->sliders.at(k);
+        out << " vy " << fmt("%.3f", f.max_vertical_speed) << ", ω "
+            << fmt("%.2f", f.max_angular_speed) << ", " << percent(f.travel) << " |";
+      }
+      out << '\n';
+    }
+  }
+
+  // One row per runner and slider; the resting box's jitter is the runner's, repeated on its rows.
+  void csv(std::ostream& o) const {
+    o << "runner,body,ground,rolling,steps,internal_edges,max_vertical_speed,max_angular_speed,"
+         "travel,resting_jitter\n";
+    for (const SlideRun& r : runs_) {
+      const scenes::SceneMetrics& m = r.metrics;
+      if (!m.slide) continue;
+      for (const scenes::SliderFigures& f : m.slide->sliders) {
+        o << m.backend << ',' << f.body << ',' << f.ground << ',' << (f.rolling ? "true" : "false")
+          << ',' << m.steps << ','
+          << (m.backend == scenes::box2d_own ? "" : internal_edges_ ? "true" : "false") << ','
+          << fmt("%.6g", f.max_vertical_speed) << ',' << fmt("%.6g", f.max_angular_speed) << ','
+          << fmt("%.6g", f.travel) << ','
+          << (m.top_displacement ? fmt("%.6g", *m.top_displacement) : "") << '\n';
+      }
+    }
+  }
+
+  // The sliders' paths (height above their start against distance along x), one panel per
+  // runner on one height scale: a ghost collision is a hop and a path cut short.
+  void paths_chart(ReportDirectory& dir, Charts& charts) const {
+    double low = 0, high = 0;
+    dir.write("slide_paths.dat", [&](std::ostream& o) {
+      for (const SlideRun& r : runs_) {
+        for (const scenes::SliderPath& p : r.paths) {
+          o << "# " << r.metrics.backend << ": " << p.body << " on " << p.ground
+            << ": x height\n";
+          for (std::size_t i = 0; i < p.x.size(); ++i) {
+            o << fmt("%.6g", p.x[i]) << ' ' << fmt("%.6g", p.height[i]) << '\n';
+            low = std::min(low, p.height[i]);
+            high = std::max(high, p.height[i]);
+          }
+          o << "\n\n";
+        }
+      }
+    });
+    const std::size_t panels = runs_.size();
+    std::ostringstream plot;
+    plot << "set multiplot layout " << panels << ",1 title 'Scene slide: each slider''s height "
+            "above its start against the distance it travelled (one panel per runner)'\n"
+         << "set grid\nset key outside right top font ',9'\nset ylabel 'height (m)'\n"
+         << "set yrange [" << fmt("%.4g", low - 0.01) << ':' << fmt("%.4g", high + 0.01) << "]\n"
+         << "set xrange [-1:*]\n";
+    int index = 0;
+    for (const SlideRun& r : runs_) {
+      plot << "set title '" << r.metrics.backend << "'\n"
+           << (&r == &runs_.back() ? "set xlabel 'distance along x (m)'\n" : "") << "plot ";
+      for (std::size_t k = 0; k < r.paths.size(); ++k, ++index) {
+        plot << (k ? ", " : "") << dir.quoted("slide_paths.dat") << " index " << index
+             << " using 1:2 with lines lw 1.5 title '" << r.paths[k].body << " on "
+             << r.paths[k].ground << "'";
+      }
+      plot << '\n';
+    }
+    plot << "unset multiplot\n";
+    charts.draw(dir, "slide_paths",
+                "svg size 1000," + std::to_string(120 + 230 * panels) +
+                    " dynamic font 'sans,11' background '#ffffff'",
+                plot.str());
+  }
+
+  bool internal_edges_ = true;
+  std::vector<SlideRun> runs_;
+};
+
+}  // namespace
+
+std::unique_ptr<CompareSection> make_slide_section() { return std::make_unique<SlideSection>(); }
+
+}  // namespace dyop::report
