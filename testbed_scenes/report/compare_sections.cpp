@@ -12,6 +12,7 @@ namespace dyop::report {
 std::unique_ptr<CompareSection> make_slide_section();
 std::unique_ptr<CompareSection> make_skip_section();
 std::unique_ptr<CompareSection> make_paper_section();
+std::unique_ptr<CompareSection> make_thread_section();
 
 std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   std::vector<std::unique_ptr<CompareSection>> sections;
@@ -19,6 +20,7 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   sections.push_back(make_slide_section());
   sections.push_back(make_skip_section());
   sections.push_back(make_paper_section());
+  sections.push_back(make_thread_section());
   return sections;
 }
 

@@ -32,6 +32,11 @@ void write_thread_scaling_csv(const std::vector<ThreadScalingRecord>& records,
 std::string write_thread_scaling_outputs(const std::vector<ThreadScalingRecord>& records,
                                          const std::string& scene, ReportDirectory& dir) {
   dir.write("threads.csv", [&](std::ostream& o) { write_thread_scaling_csv(records, o); });
+  return thread_scaling_markdown(records, scene);
+}
+
+std::string thread_scaling_markdown(const std::vector<ThreadScalingRecord>& records,
+                                    const std::string& scene) {
   std::ostringstream md;
   md << "## Worlds on threads\n\nCopies of `" << scene << "`, one world per thread, "
      << (records.empty() ? 0 : records.front().steps)

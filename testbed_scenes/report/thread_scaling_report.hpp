@@ -20,7 +20,11 @@ void write_thread_scaling_table(const std::vector<scenes::ThreadScalingRecord>& 
 void write_thread_scaling_csv(const std::vector<scenes::ThreadScalingRecord>& records,
                               std::ostream& out);
 
-/// Writes `threads.csv` in `dir` and returns the report's Markdown section.
+/// The report's Markdown section (a `##` heading, what is measured, the table).
+std::string thread_scaling_markdown(const std::vector<scenes::ThreadScalingRecord>& records,
+                                    const std::string& scene);
+
+/// Writes `threads.csv` in `dir` and returns `thread_scaling_markdown`.
 std::string write_thread_scaling_outputs(const std::vector<scenes::ThreadScalingRecord>& records,
                                          const std::string& scene, ReportDirectory& dir);
 

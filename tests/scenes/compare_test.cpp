@@ -73,6 +73,15 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   for (const char* runner : {"box2d-own", "dyop", "sat"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / ("slide_" + std::string(runner) + ".svg"))) << runner;
   }
+  // The worlds-on-threads section: 1, 2 and 4 rain worlds under each of the two runners.
+  EXPECT_NE(report.find("## Worlds on threads"), std::string::npos);
+  const std::string threads = read(dir / "threads.csv");
+  EXPECT_EQ(std::count(threads.begin(), threads.end(), '\n'), 3 * 2 + 1);
+  // Every section's files are listed in the report.
+  for (const char* file : {"inworld.csv", "slide.csv", "skips.csv", "paper_methods.csv",
+                           "threads.csv"}) {
+    EXPECT_NE(report.find(std::string("`") + file + "`"), std::string::npos) << file;
+  }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
     for (const char* chart : {"time_per_method.svg", "time_vs_error.svg", "paper_figure7.svg",
                               "slide_paths.svg"}) {
