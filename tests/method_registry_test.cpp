@@ -26,6 +26,9 @@ TEST(MethodRegistry, EveryNameIsUniqueAndParsesBackToItsMethod) {
   }
   EXPECT_FALSE(parse_method("lin-canny-warm").has_value());
   EXPECT_FALSE(parse_method("").has_value());
+  // A filter keeps the rows it names: Box2D's own code is no method of the solver alone.
+  EXPECT_EQ(parse_method("sat", [](const MethodInfo& r) { return !r.needs_box2d(); }), Method::Sat);
+  EXPECT_FALSE(parse_method("box2d", [](const MethodInfo& r) { return !r.needs_box2d(); }));
 }
 
 TEST(MethodRegistry, VariantNamesSayColdOrWarmOnlyForWarmStartableMethods) {

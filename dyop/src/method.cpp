@@ -2,9 +2,9 @@
 
 namespace dyop {
 
-std::optional<Method> parse_method(std::string_view s) {
+std::optional<Method> parse_method(std::string_view s, RowFilter keep) {
   for (const MethodInfo& row : method_table) {
-    if (s == row.name) return row.method;
+    if (s == row.name && (keep == nullptr || keep(row))) return row.method;
   }
   return std::nullopt;
 }

@@ -106,8 +106,9 @@ struct PairsArgs {
 
 int run(const PairsArgs& args) {
   PairsOptions options;
+  const std::optional<Method> chosen = parse_method(args.method);  // nothing: "all"
   for (const PairBackend& b : pair_backends()) {
-    if (args.method == "all" || args.method == b.name) options.backends.push_back(b);
+    if (!chosen || b.method == *chosen) options.backends.push_back(b);
   }
   options.use_float = args.precision == "float";
   options.table = args.format == "table";

@@ -83,13 +83,6 @@ const SceneInfo* find_scene(std::string_view name) {
   return e ? &e->info : nullptr;
 }
 
-std::optional<box2d::Backend> parse_backend(std::string_view name) {
-  for (box2d::Backend b : box2d::all_backends) {
-    if (name == box2d::name(b)) return b;
-  }
-  return std::nullopt;
-}
-
 const char* name(const Runner& runner) { return runner ? box2d::name(*runner) : box2d_own; }
 
 std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, std::uint64_t seed,

@@ -51,9 +51,6 @@ const std::vector<SceneInfo>& scene_catalog();
 /// The scene called `name`, or nullptr.
 const SceneInfo* find_scene(std::string_view name);
 
-/// The backend spelt `name` ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or nothing.
-std::optional<box2d::Backend> parse_backend(std::string_view name);
-
 /// The name of Box2D's own contact with the plug-in not installed, the reference of every
 /// in-world ratio: in tables, CSV and JSON wherever a backend name stands.
 inline constexpr const char* box2d_own = "box2d-own";

@@ -62,14 +62,13 @@ namespace dyop::box2d {
 /// (`b2CollidePolygons`, Box2D's own answer through the same path, for comparison).
 using Backend = Method;
 
-namespace detail {
-inline constexpr auto is_backend = [](const MethodInfo& row) { return row.box2d_backend; };
-}  // namespace detail
+/// True for the registry's rows the plug-in offers (`MethodInfo::box2d_backend`): the filter of
+/// `all_backends`, and of `parse_method` for a backend's name.
+constexpr bool is_backend(const MethodInfo& row) { return row.box2d_backend; }
 
 /// Every backend, in registry order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
 inline constexpr auto all_backends =
-    dyop::detail::select_methods<dyop::detail::count_methods(detail::is_backend)>(
-        detail::is_backend);
+    dyop::detail::select_methods<dyop::detail::count_methods(is_backend)>(is_backend);
 
 /// Number of backends.
 inline constexpr int backend_count = static_cast<int>(all_backends.size());

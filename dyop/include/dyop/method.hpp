@@ -227,8 +227,13 @@ std::vector<Variant> variants(Keep keep) {
   return out;
 }
 
-/// The method spelt `s` (its `name`), or nothing.
-std::optional<Method> parse_method(std::string_view s);
+/// A choice of the registry's rows (a backend of the Box2D plug-in, a method that runs without
+/// Box2D, ...): true for the rows it keeps.
+using RowFilter = bool (*)(const MethodInfo& row);
+
+/// The method spelt `s` (its `name`) among the rows `keep` keeps (every row when nullptr), or
+/// nothing: the one parser of method and backend names.
+std::optional<Method> parse_method(std::string_view s, RowFilter keep = nullptr);
 
 namespace detail {
 
