@@ -1,3 +1,10 @@
+// `penetrate_batch`: `sat`'s answer (Overlap or Depth) for many pairs at once over
+// structure-of-arrays input. The algorithm is written once in detail/batch_kernel.hpp over a
+// "lanes" type: per pair, validation as Triangle<T>::make decides it, the six overlaps in a frame
+// at A's first vertex, and for pairs found apart the exact distance. This file checks the CPU
+// once, sends whole blocks to the AVX2 + FMA lanes (batch_avx2.cpp) when it has both, and to the
+// portable lanes (one pair per step) otherwise. Invariant: both paths give every pair the same
+// status and, to rounding, the same figures as `sat` (tests/batch_test.cpp).
 #include "dyop/batch.hpp"
 
 #include <algorithm>

@@ -1,3 +1,21 @@
+// DyOP-PD (the paper "Primitives penetration depth computation using Dynamic Pivot Point
+// technique", reconstructed and corrected: docs/paper.md, dyop/dyop.hpp).
+//
+// `dyop`, exact:
+//   1. Put the pair in A's local frame (PairFrame: A's first vertex subtracted).
+//   2. Overlap along the six candidate axes (A's edge normals, B's negated), branch-free; the
+//      least is the depth and its axis the normal (certify_axes, shared with `sat`).
+//   3. Apart: the pivot (centre of the intersection box of the two AABBs, the gap's centre when
+//      they are apart) names a vertex of each triangle and an edge of the other; their distance
+//      stands when the gap along its direction equals it (duality: the distance is at least the
+//      gap along any unit axis), else all vertex–edge pairs decide.
+//   Invariant: touching and penetrating answers equal `sat`'s bit for bit; apart, the distance is
+//   exact within the touching band.
+// `dyop_fast`, the heuristic alone: the pivot's vertex of one triangle against the pivot's edge
+// line of the other (normal form n·x = c, unit n), both ways; penetrating when a pivot vertex is
+// strictly inside the other triangle (orientation signs, not area sums). No certification: it can
+// miss a penetration or overstate its depth (measured in tests/method_accuracy_test.cpp).
+
 #include "dyop/dyop.hpp"
 
 #include "detail/certify_axes.hpp"

@@ -1,3 +1,10 @@
+// The paper's equations 3–8, literally, for reproduction only (docs/paper.md lists what is wrong
+// with them): each edge's line in slope–intercept form y = Mx + C (eq. 3, 4), the vertex's own
+// intercept C_i (eq. 5), and the depth |C_i − C| / sqrt(X_P² + Y_P²) of eq. 8, which divides by
+// the distance of P from the origin instead of sqrt(1 + M²). Vertical edges and P at the origin
+// give `Invalid` (the equations have no value there); the true line distance is kept beside it so
+// that a test can pin the paper's own Figure 6 (0.0580101 against the printed 0.0292043).
+
 #include "dyop/dyop_paper.hpp"
 
 #include <cmath>

@@ -1,3 +1,13 @@
+// GJK + EPA in 2D (G. van den Bergen, "Proximity Queries and Penetration Depth Computation on 3D
+// Game Objects", GDC 2001; dyop/epa.hpp has the whole description).
+//   1. GJK: a simplex of support points of A − B (each a pair of vertex indices) iterated towards
+//      the origin; it ends with the distance (origin outside) or a triangle enclosing the origin.
+//   2. EPA: from that polygon (completed to positive area when GJK stopped on a point or a
+//      segment), split the edge closest to the origin at the support point along its normal, until
+//      the support lies no farther than `epa_tolerance` beyond it; that edge gives depth and normal.
+//   Invariants: the polygon stays convex and counter-clockwise; edges are differences of like
+//   vertices, so a sliver's edge keeps an accurate direction; at most epa_max_iterations each.
+
 #include "dyop/epa.hpp"
 
 #include <algorithm>

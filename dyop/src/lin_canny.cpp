@@ -1,3 +1,16 @@
+// Lin–Canny closest-feature tracking (M. C. Lin, J. F. Canny, 1991; V-Clip, B. Mirtich, 1998),
+// the paper's baseline (dyop/lin_canny.hpp has the whole description).
+//   1. Feature walk from the cached feature pair (or vertex 0 of each, cold): each state tests
+//      each feature's closest point against the other feature's Voronoi region and steps to the
+//      neighbouring feature a violated region names; it ends proving the pair apart (exact
+//      distance), or finding it meeting (a vertex inside, two edges crossing, a distance inside
+//      the touching band).
+//   2. Meeting pairs: a depth walk over the six axes sorted by angle (the cycle of A − B's edge
+//      normals), from the least overlap among the meeting features' axes and the cached axis,
+//      moving while the overlap strictly decreases: a local minimum, never below the true depth.
+//   Invariants: a visited set (36 feature pairs) stops a rounding cycle; the depth walk visits
+//   each axis at most once; `iterations` ≤ lin_canny_max_steps.
+
 #include "dyop/lin_canny.hpp"
 
 #include <algorithm>

@@ -1,11 +1,13 @@
 #pragma once
-// Internal: Box2D-style contact manifold on a chosen reference face, shared by every method.
+// Internal: Box2D-style contact manifold on a chosen reference face, shared by every method
+// (after E. Catto's b2CollidePolygons, Box2D 2.4).
 //
 // The incident edge is the other triangle's edge most anti-parallel to the reference normal; it
 // is clipped against the two side lines of the reference face (moved outwards by the margin, as
 // Box2D moves them by the skins), and a clipped point is kept while its separation from the
 // reference line is at most the margin. Keys name the feature pair so that they stay equal from
-// frame to frame while the same features touch.
+// frame to frame while the same features touch. Invariants: at most two points, each on the
+// incident edge and within the reference face's side lines widened by the margin.
 
 #include <algorithm>
 #include <cstdint>
