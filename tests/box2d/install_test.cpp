@@ -3,7 +3,6 @@
 // world was deleted without destroying its bodies. The sanitizer build (scripts/sanitize.sh) runs
 // these too: a contact freed with the wrong function or size is reported there.
 #include <cstdint>
-#include <cstring>
 #include <memory>
 
 #include "scene.hpp"
@@ -30,25 +29,6 @@ void add_pile(World& world) {
   }
 }
 
-// Every body's position, angle and velocities, bit for bit (FNV-1a over their bytes).
-std::uint64_t state_hash(const b2World& world) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto add = [&](float x) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &x, sizeof bits);
-    for (int k = 0; k < 4; ++k) h = (h ^ ((bits >> (8 * k)) & 0xffu)) * 1099511628211ull;
-  };
-  for (const b2Body* b = world.GetBodyList(); b != nullptr; b = b->GetNext()) {
-    add(b->GetPosition().x);
-    add(b->GetPosition().y);
-    add(b->GetAngle());
-    add(b->GetLinearVelocity().x);
-    add(b->GetLinearVelocity().y);
-    add(b->GetAngularVelocity());
-  }
-  return h;
-}
-
 void step(World& world, int steps) {
   for (int i = 0; i < steps; ++i) world.step();
 }
@@ -62,7 +42,7 @@ std::uint64_t pile_after(Change change) {
     change(i);
     world.step();
   }
-  return state_hash(world.get());
+  return scenes::state_hash(world);
 }
 
 // Each test leaves the registry as it found it: Box2D's own contact.

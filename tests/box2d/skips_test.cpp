@@ -5,13 +5,13 @@
 #include <box2d/box2d.h>
 
 #include <cstdint>
-#include <cstring>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <vector>
 
 #include "dyop/box2d.hpp"
+#include "scenes/world.hpp"
 
 namespace dyop::box2d {
 namespace {
@@ -19,18 +19,9 @@ namespace {
 constexpr float kStep = 1.0f / 60.0f;
 
 struct Outcome {
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over every body's state
+  std::uint64_t hash = 0;  // `scenes::state_hash` of the falling bodies
   Stats stats;
 };
-
-void mix(std::uint64_t& h, float x) {
-  std::uint32_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  for (int i = 0; i < 4; ++i) {
-    h ^= (bits >> (8 * i)) & 0xffu;
-    h *= 1099511628211ull;
-  }
-}
 
 void add_triangle(b2Body* body, b2Vec2 p0, b2Vec2 p1, b2Vec2 p2, float density) {
   const TriangleShape t = make_triangle(p0, p1, p2);
@@ -74,14 +65,7 @@ Outcome run(Backend backend, const Config& config, int steps) {
       }
     }
     for (int i = 0; i < steps; ++i) world->Step(kStep, 8, 3);
-    for (b2Body* b : bodies) {
-      mix(out.hash, b->GetPosition().x);
-      mix(out.hash, b->GetPosition().y);
-      mix(out.hash, b->GetAngle());
-      mix(out.hash, b->GetLinearVelocity().x);
-      mix(out.hash, b->GetLinearVelocity().y);
-      mix(out.hash, b->GetAngularVelocity());
-    }
+    out.hash = scenes::state_hash(bodies);
     out.stats = stats();
     // Destroying the bodies destroys their contacts, so the plug-in can be switched afterwards.
     for (b2Body* b = world->GetBodyList(); b != nullptr;) {
