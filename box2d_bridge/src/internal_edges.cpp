@@ -81,7 +81,7 @@ class Neighbours : public b2QueryCallback {
     const b2Body& body = *self_.GetBody();
     int count = 0;
     const b2Fixture* f = body.GetFixtureList();
-    for (; f && count <= walked_body_fixtures; f = f->GetNext()) ++count;
+    for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
     if (f == nullptr) {  // a small body: all of it
       for (f = body.GetFixtureList(); f; f = f->GetNext()) consider(*f);
     } else {
@@ -149,7 +149,8 @@ struct VertexOutline {
 
   // A simple outline vertex (one edge in, one out) turning by less than a corner, or reflex.
   bool flat_or_reflex() const {
-    return ins == 1 && outs == 1 && b2Cross(in, out) <= flat_outline_sine * in.Length() * out.Length();
+    return ins == 1 && outs == 1 &&
+           b2Cross(in, out) <= flat_outline_sine * in.Length() * out.Length();
   }
 };
 
