@@ -132,8 +132,8 @@ struct Config {
   /// fixtures' bodies as they are then (the body's triangles near each one, from the world's
   /// broad phase), and keeps them in its `ContactMemory`; it finds them again after fixtures of
   /// its world changed (`ContactMemory::internal_edges_stamp`). The other backends ignore it and
-  /// never look. Off: the world is bit-identical to Box2D's own handling of each fixture alone, as the
-  /// plug-in was without the rule.
+  /// never look. Off: the world is bit-identical to Box2D's own handling of each fixture alone,
+  /// as the plug-in was without the rule.
   bool internal_edges = true;
 
   /// Every skip on (the default), internal edges as by default.
