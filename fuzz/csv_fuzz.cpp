@@ -1,10 +1,10 @@
 // libFuzzer target for the pair CSV reader and `dyop pairs`' processing (program/pair_csv.hpp,
-// program/pairs_command.hpp): any bytes as the input file, every backend, both precisions, CSV
+// program/pairs_command.hpp): any bytes as the input file, every method, both precisions, CSV
 // and table.
 //
 // What it asserts, besides "no crash, no sanitizer report" (and no Box2D assert: the plug-in's
 // `collide_triangles` runs on whatever the reader accepts):
-// - one output line per backend and input line that is not blank or a comment, in input order,
+// - one output line per method and input line that is not blank or a comment, in input order,
 //   after one header line; the summary counts them;
 // - each is `ok` or an `error` with a non-empty message;
 // - an `ok` line of a library method has no NaN or inf (Box2D's own answers are measured by
@@ -36,13 +36,13 @@ int data_lines(const std::string& text) {
 
 void check_csv(const std::string& text, bool use_float) {
   cli::PairsOptions options;
-  options.backends = cli::pair_backends();
+  options.methods = cli::pair_methods();
   options.use_float = use_float;
   std::istringstream in(text);
   std::ostringstream out;
   const cli::PairsSummary s = cli::run_pairs(options, in, out);
-  const int backends = static_cast<int>(options.backends.size());
-  const int expected = data_lines(text) * backends;
+  const int methods = static_cast<int>(options.methods.size());
+  const int expected = data_lines(text) * methods;
   if (s.rows != expected || s.ok + s.errors != s.rows) fail("summary does not count every line", "");
   std::istringstream lines(out.str());
   std::string line;
@@ -76,12 +76,12 @@ void check_csv(const std::string& text, bool use_float) {
 
 void check_table(const std::string& text) {
   cli::PairsOptions options;
-  options.backends = cli::pair_backends();
+  options.methods = cli::pair_methods();
   options.table = true;
   std::istringstream in(text);
   std::ostringstream out;
   const cli::PairsSummary s = cli::run_pairs(options, in, out);
-  if (s.rows != data_lines(text) * static_cast<int>(options.backends.size())) {
+  if (s.rows != data_lines(text) * static_cast<int>(options.methods.size())) {
     fail("table summary does not count every line", "");
   }
 }

@@ -19,11 +19,11 @@ std::vector<std::string> lines_of(const std::string& text) {
   return out;
 }
 
-PairBackend backend(const std::string& name) {
-  for (const PairBackend& b : pair_backends()) {
+PairMethod method(const std::string& name) {
+  for (const PairMethod& b : pair_methods()) {
     if (b.name == name) return b;
   }
-  ADD_FAILURE() << "no backend " << name;
+  ADD_FAILURE() << "no method " << name;
   return {};
 }
 
@@ -86,7 +86,7 @@ TEST(PairsCommand, EveryInputLineIsAccountedForInOrderWithItsLineNumber) {
       "0,0, 1,0, 0,1,  2,0, 3,0, 2,oops\n";  // line 7: not a number
   std::istringstream in(input);
   std::ostringstream out;
-  const PairsSummary s = run_pairs({{backend("sat")}, false, false}, in, out);
+  const PairsSummary s = run_pairs({{method("sat")}, false, false}, in, out);
   EXPECT_EQ(s.rows, 5);
   EXPECT_EQ(s.ok, 2);
   EXPECT_EQ(s.errors, 3);
@@ -103,7 +103,7 @@ TEST(PairsCommand, EveryInputLineIsAccountedForInOrderWithItsLineNumber) {
 TEST(PairsCommand, NumbersHaveSeventeenSignificantDigits) {
   std::istringstream in("0,0, 3,0, 0,3,  0.9,0.9, 3,3, 1,4\n");
   std::ostringstream out;
-  run_pairs({{backend("dyop")}, false, false}, in, out);
+  run_pairs({{method("dyop")}, false, false}, in, out);
   const auto lines = lines_of(out.str());
   ASSERT_EQ(lines.size(), 2u);
   // Depth along the hypotenuse: (3 - 0.9 - 0.9) / sqrt(2), printed "0.84852813742385..." in full.
@@ -115,7 +115,7 @@ TEST(PairsCommand, NumbersHaveSeventeenSignificantDigits) {
 TEST(PairsCommand, FloatPrecisionRunsTheFloatInstantiation) {
   std::istringstream in("0,0, 3,0, 0,3,  0.9,0.9, 3,3, 1,4\n");
   std::ostringstream out;
-  run_pairs({{backend("sat")}, true, false}, in, out);
+  run_pairs({{method("sat")}, true, false}, in, out);
   const auto lines = lines_of(out.str());
   ASSERT_EQ(lines.size(), 2u);
   const std::string depth = lines[1].substr(7, lines[1].find(',', 7) - 7);
@@ -127,17 +127,17 @@ TEST(PairsCommand, FloatPrecisionRunsTheFloatInstantiation) {
 TEST(PairsCommand, SeveralMethodsAddAMethodColumnAndOneLinePerMethod) {
   std::istringstream in("0,0, 1,0, 0,1,  2,0, 3,0, 2,1\n");
   std::ostringstream out;
-  const PairsSummary s = run_pairs({pair_backends(), false, false}, in, out);
+  const PairsSummary s = run_pairs({pair_methods(), false, false}, in, out);
   const auto lines = lines_of(out.str());
   EXPECT_EQ(lines[0].rfind("method,row,status", 0), 0u);
-  EXPECT_EQ(lines.size(), pair_backends().size() + 1);
-  EXPECT_EQ(s.rows, static_cast<int>(pair_backends().size()));
+  EXPECT_EQ(lines.size(), pair_methods().size() + 1);
+  EXPECT_EQ(s.rows, static_cast<int>(pair_methods().size()));
 }
 
 TEST(PairsCommand, MethodThatCannotHandleAPairReportsAnErrorLineWithItsReason) {
   std::istringstream in("0,0, 0,2, -2,1,  -0.2,1, 2,0.5, 2,1.5\n");  // pivot edge x = 0
   std::ostringstream out;
-  const PairsSummary s = run_pairs({{backend("dyop-paper")}, false, false}, in, out);
+  const PairsSummary s = run_pairs({{method("dyop-paper")}, false, false}, in, out);
   EXPECT_EQ(s.errors, 1);
   EXPECT_NE(out.str().find("1,error"), std::string::npos) << out.str();
 }

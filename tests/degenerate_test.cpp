@@ -362,12 +362,12 @@ TEST(DegenerateCsv, RejectedLinesNameTheProblemAndEveryOtherLineIsAnswered) {
   for (const std::string& l : lines) text += l + "\n";
   for (bool use_float : {false, true}) {
     cli::PairsOptions options;
-    options.backends = cli::pair_backends();
+    options.methods = cli::pair_methods();
     options.use_float = use_float;
     std::istringstream input(text);
     std::ostringstream output;
     const cli::PairsSummary s = cli::run_pairs(options, input, output);
-    const int backends = static_cast<int>(options.backends.size());
+    const int backends = static_cast<int>(options.methods.size());
     EXPECT_EQ(s.rows, 7 * backends);
     std::istringstream out(output.str());
     std::string line;

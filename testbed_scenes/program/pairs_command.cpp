@@ -46,7 +46,7 @@ void write_table_line(std::ostream& out, const std::string& method, const std::s
 
 PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostream& out) {
   PairsSummary summary;
-  const bool several = options.backends.size() > 1;
+  const bool several = options.methods.size() > 1;
   if (options.table) {
     out << report::table_line("%5s  %-10s  %-6s  %7s  %16s  %16s  %16s  %16s  %s\n", "row",
                               "method", "status", "overlap", "depth", "separation", "nx", "ny",
@@ -54,13 +54,13 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
   } else {
     out << (several ? "method," : "") << pair_csv_header() << '\n';
   }
-  auto emit = [&](const PairBackend& backend, const std::string& csv, bool ok) {
+  auto emit = [&](const PairMethod& method, const std::string& csv, bool ok) {
     ++summary.rows;
     ++(ok ? summary.ok : summary.errors);
     if (options.table) {
-      write_table_line(out, backend.name, csv);
+      write_table_line(out, method.name, csv);
     } else {
-      out << (several ? backend.name + "," : std::string()) << csv << '\n';
+      out << (several ? method.name + "," : std::string()) << csv << '\n';
     }
   };
 
@@ -69,13 +69,13 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
     const PairLine line = parse_pair_line(text);
     if (line.kind == PairLine::Kind::Skip) continue;
     if (line.kind == PairLine::Kind::Error) {
-      for (const PairBackend& b : options.backends) emit(b, format_error_line(row, line.message), false);
+      for (const PairMethod& b : options.methods) emit(b, format_error_line(row, line.message), false);
       continue;
     }
-    // Built once per precision: a float-only backend runs in float even in a double run.
+    // Built once per precision: a float-only method runs in float even in a double run.
     const PairTriangles<double> in_double = make_pair_triangles<double>(line.values);
     const PairTriangles<float> in_float = make_pair_triangles<float>(line.values);
-    for (const PairBackend& b : options.backends) {
+    for (const PairMethod& b : options.methods) {
       const bool use_float = options.use_float || b.run_double == nullptr;
       const std::string& message = use_float ? in_float.message : in_double.message;
       if (!message.empty()) {
@@ -107,8 +107,8 @@ struct PairsArgs {
 int run(const PairsArgs& args) {
   PairsOptions options;
   const std::optional<Method> chosen = parse_method(args.method);  // nothing: "all"
-  for (const PairBackend& b : pair_backends()) {
-    if (!chosen || b.method == *chosen) options.backends.push_back(b);
+  for (const PairMethod& b : pair_methods()) {
+    if (!chosen || b.method == *chosen) options.methods.push_back(b);
   }
   options.use_float = args.precision == "float";
   options.table = args.format == "table";
@@ -142,7 +142,7 @@ int run(const PairsArgs& args) {
 void add_pairs_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PairsArgs>();
   std::vector<std::string> methods{"all"};
-  for (const PairBackend& b : pair_backends()) methods.push_back(b.name);
+  for (const PairMethod& b : pair_methods()) methods.push_back(b.name);
   CLI::App* cmd = app.add_subcommand(
       "pairs",
       "Penetration depth of triangle pairs read as CSV (ax,ay,bx,by,cx,cy,px,py,qx,qy,rx,ry)");

@@ -1,17 +1,17 @@
 #pragma once
 /// \file
-/// `dyop pairs`: runs backends over the pair CSV (contract in `program/pair_csv.hpp`). The
+/// `dyop pairs`: runs methods over the pair CSV (contract in `program/pair_csv.hpp`). The
 /// subcommand itself (arguments, files) is registered by `add_pairs_command` (`commands.hpp`).
 
 #include <iosfwd>
 #include <vector>
 
-#include "program/pair_backend.hpp"
+#include "program/pair_method.hpp"
 
 namespace dyop::cli {
 
 struct PairsOptions {
-  std::vector<PairBackend> backends;  ///< one: the CSV contract; several: a `method` column first
+  std::vector<PairMethod> methods;  ///< one: the CSV contract; several: a `method` column first
   bool use_float = false;  ///< convert input to float and run the float instantiation
   bool table = false;      ///< aligned human-readable table instead of CSV
 };
@@ -23,7 +23,7 @@ struct PairsSummary {
   int errors = 0;
 };
 
-/// Reads every line of `in`, writes one output line per data line and backend; never stops on a
+/// Reads every line of `in`, writes one output line per data line and method; never stops on a
 /// bad line.
 PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostream& out);
 

@@ -12,7 +12,7 @@
 namespace dyop::cli {
 
 /// One method as `dyop pairs` runs it, at `Level::Depth`, cold.
-struct PairBackend {
+struct PairMethod {
   Method method = Method::Dyop;  ///< the registry's row
   std::string name;              ///< its spelling: "dyop", ..., "box2d"
   /// Double-precision run; nullptr when the method runs in float only (box2d).
@@ -21,7 +21,7 @@ struct PairBackend {
 };
 
 /// Every method of this build that answers single pairs, in registry order.
-std::vector<PairBackend> pair_backends();
+std::vector<PairMethod> pair_methods();
 
 /// The result of a float run widened to double (for one output path).
 Result<double> widen(const Result<float>& r);

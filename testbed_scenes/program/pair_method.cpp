@@ -1,4 +1,4 @@
-#include "program/pair_backend.hpp"
+#include "program/pair_method.hpp"
 
 #include "measure/pair_function.hpp"
 
@@ -9,8 +9,8 @@ Vec2<double> widen(const Vec2<float>& v) { return v.cast<double>(); }
 
 }  // namespace
 
-std::vector<PairBackend> pair_backends() {
-  std::vector<PairBackend> out;
+std::vector<PairMethod> pair_methods() {
+  std::vector<PairMethod> out;
   for (const MethodInfo& row : method_table) {
     if (!measure::runs_pairs<float>(row.method)) continue;
     out.push_back({row.method, row.name, measure::pair_function<double>(row.method),
