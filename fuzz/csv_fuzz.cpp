@@ -36,7 +36,7 @@ int data_lines(const std::string& text) {
 
 void check_csv(const std::string& text, bool use_float) {
   cli::PairsOptions options;
-  options.methods = cli::pair_methods();
+  options.methods = cli::pairs_methods();
   options.use_float = use_float;
   std::istringstream in(text);
   std::ostringstream out;
@@ -76,7 +76,7 @@ void check_csv(const std::string& text, bool use_float) {
 
 void check_table(const std::string& text) {
   cli::PairsOptions options;
-  options.methods = cli::pair_methods();
+  options.methods = cli::pairs_methods();
   options.table = true;
   std::istringstream in(text);
   std::ostringstream out;

@@ -20,7 +20,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 PairMethod method(const std::string& name) {
-  for (const PairMethod& b : pair_methods()) {
+  for (const PairMethod& b : pairs_methods()) {
     if (b.name == name) return b;
   }
   ADD_FAILURE() << "no method " << name;
@@ -127,11 +127,11 @@ TEST(PairsCommand, FloatPrecisionRunsTheFloatInstantiation) {
 TEST(PairsCommand, SeveralMethodsAddAMethodColumnAndOneLinePerMethod) {
   std::istringstream in("0,0, 1,0, 0,1,  2,0, 3,0, 2,1\n");
   std::ostringstream out;
-  const PairsSummary s = run_pairs({pair_methods(), false, false}, in, out);
+  const PairsSummary s = run_pairs({pairs_methods(), false, false}, in, out);
   const auto lines = lines_of(out.str());
   EXPECT_EQ(lines[0].rfind("method,row,status", 0), 0u);
-  EXPECT_EQ(lines.size(), pair_methods().size() + 1);
-  EXPECT_EQ(s.rows, static_cast<int>(pair_methods().size()));
+  EXPECT_EQ(lines.size(), pairs_methods().size() + 1);
+  EXPECT_EQ(s.rows, static_cast<int>(pairs_methods().size()));
 }
 
 TEST(PairsCommand, MethodThatCannotHandleAPairReportsAnErrorLineWithItsReason) {

@@ -362,7 +362,7 @@ TEST(DegenerateCsv, RejectedLinesNameTheProblemAndEveryOtherLineIsAnswered) {
   for (const std::string& l : lines) text += l + "\n";
   for (bool use_float : {false, true}) {
     cli::PairsOptions options;
-    options.methods = cli::pair_methods();
+    options.methods = cli::pairs_methods();
     options.use_float = use_float;
     std::istringstream input(text);
     std::ostringstream output;

@@ -9,7 +9,7 @@ Vec2<double> widen(const Vec2<float>& v) { return v.cast<double>(); }
 
 }  // namespace
 
-std::vector<PairMethod> pair_methods() {
+std::vector<PairMethod> pairs_methods() {
   std::vector<PairMethod> out;
   for (const MethodInfo& row : method_table) {
     if (!measure::runs_pairs<float>(row.method)) continue;

@@ -20,8 +20,9 @@ struct PairMethod {
   PairFunction<float> run_float = nullptr;  ///< float run
 };
 
-/// Every method of this build that answers single pairs, in registry order.
-std::vector<PairMethod> pair_methods();
+/// The methods `dyop pairs` runs: every row of this build that answers single pairs, in registry
+/// order (`dyop::pair_methods` and, with Box2D, Box2D's own code).
+std::vector<PairMethod> pairs_methods();
 
 /// The result of a float run widened to double (for one output path).
 Result<double> widen(const Result<float>& r);

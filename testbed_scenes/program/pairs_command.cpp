@@ -107,7 +107,7 @@ struct PairsArgs {
 int run(const PairsArgs& args) {
   PairsOptions options;
   const std::optional<Method> chosen = parse_method(args.method);  // nothing: "all"
-  for (const PairMethod& b : pair_methods()) {
+  for (const PairMethod& b : pairs_methods()) {
     if (!chosen || b.method == *chosen) options.methods.push_back(b);
   }
   options.use_float = args.precision == "float";
@@ -142,7 +142,7 @@ int run(const PairsArgs& args) {
 void add_pairs_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PairsArgs>();
   std::vector<std::string> methods{"all"};
-  for (const PairMethod& b : pair_methods()) methods.push_back(b.name);
+  for (const PairMethod& b : pairs_methods()) methods.push_back(b.name);
   CLI::App* cmd = app.add_subcommand(
       "pairs",
       "Penetration depth of triangle pairs read as CSV (ax,ay,bx,by,cx,cy,px,py,qx,qy,rx,ry)");
