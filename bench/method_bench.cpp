@@ -172,7 +172,7 @@ void register_streams() {
 // Every benchmark of one row of the registry in precision T.
 template <class T>
 void register_method(const MethodInfo& row) {
-  if (!row.runs_double && !std::is_same_v<T, float>) return;
+  if (!row.runs_double() && !std::is_same_v<T, float>) return;
   for (InputClass c : workloads::bench_classes) {
     for (Level l : all_levels) {
       if (!row.has(l)) continue;
@@ -183,7 +183,7 @@ void register_method(const MethodInfo& row) {
         case Entry::PerPair:
           benchmark::RegisterBenchmark(bm(variant_name(row.method, false)).c_str(), bm_method<T>,
                                        row.method, c, l);
-          if (row.warm_start) {
+          if (row.warm_start()) {
             benchmark::RegisterBenchmark(bm(variant_name(row.method, true)).c_str(), bm_warm<T>,
                                          row.method, c, l);
           }

@@ -53,7 +53,7 @@ template <class T, class Check>
 void for_exact_methods(const Check& check) {
   for (const Method m : {Method::Dyop, Method::Sat}) {
     SCOPED_TRACE(name(m));
-    EXPECT_TRUE(info(m).internal_edges);
+    EXPECT_TRUE(info(m).internal_edges());
     check(m);
   }
 }
@@ -235,7 +235,7 @@ TYPED_TEST(InternalEdgeMasks, MasksAreInTheCallersOrder) {
 // Methods without the rule answer as if every axis were allowed.
 TEST(InternalEdgeMasksRegistry, OnlyTheExactMethodsHonourIt) {
   for (const MethodInfo& row : method_table) {
-    EXPECT_EQ(row.internal_edges, row.method == Method::Dyop || row.method == Method::Sat)
+    EXPECT_EQ(row.internal_edges(), row.method == Method::Dyop || row.method == Method::Sat)
         << row.name;
   }
 }

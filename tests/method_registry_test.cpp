@@ -19,7 +19,7 @@ TEST(MethodRegistry, EveryNameIsUniqueAndParsesBackToItsMethod) {
     EXPECT_TRUE(spellings.insert(row.name).second) << row.name;
     EXPECT_EQ(parse_method(row.name), row.method);
     EXPECT_STREQ(name(row.method), row.name);
-    if (row.warm_start) {
+    if (row.warm_start()) {
       EXPECT_TRUE(spellings.insert(row.cold_name).second) << row.cold_name;
       EXPECT_TRUE(spellings.insert(row.warm_name).second) << row.warm_name;
     }
@@ -35,7 +35,7 @@ TEST(MethodRegistry, VariantNamesSayColdOrWarmOnlyForWarmStartableMethods) {
   EXPECT_STREQ(variant_name(Method::LinCanny, false), "lin-canny-cold");
   EXPECT_STREQ(variant_name(Method::LinCanny, true), "lin-canny-warm");
   for (const MethodInfo& row : method_table) {
-    if (row.warm_start) continue;
+    if (row.warm_start()) continue;
     EXPECT_STREQ(variant_name(row.method, false), row.name);
     EXPECT_STREQ(variant_name(row.method, true), row.name);
   }
@@ -45,7 +45,7 @@ TEST(MethodRegistry, PerPairRowsHaveTheirEntryPointsAndTheOthersNone) {
   for (const MethodInfo& row : method_table) {
     const bool per_pair = row.entry == Entry::PerPair;
     EXPECT_EQ(row.run_float != nullptr, per_pair) << row.name;
-    EXPECT_EQ(row.run_double != nullptr, per_pair && row.runs_double) << row.name;
+    EXPECT_EQ(row.run_double != nullptr, per_pair && row.runs_double()) << row.name;
     EXPECT_NE(row.levels, 0) << row.name;
   }
   EXPECT_EQ(pair_methods.size(), 6u);

@@ -22,7 +22,7 @@ struct Setting {
   // The library method behind `backend`; nothing for `Backend::Box2D`, which is Box2D's own code.
   std::optional<Method> method;
   // The internal-edge rule, decided here once: `config.internal_edges` and a method that honours
-  // the masks (`MethodInfo::internal_edges`). Off: no contact ever looks for its masks.
+  // the masks (`MethodInfo::internal_edges()`). Off: no contact ever looks for its masks.
   bool internal_edges = false;
   // Which install this is, counted modulo 255 and never 0: a contact's masks found under another
   // install are found again (fixtures may have changed while the plug-in was not looking).
@@ -33,7 +33,7 @@ struct Setting {
       : backend(b),
         config(c),
         method(info(b).entry == Entry::PerPair ? std::optional<Method>(b) : std::nullopt),
-        internal_edges(c.internal_edges && info(b).internal_edges),
+        internal_edges(c.internal_edges && info(b).internal_edges()),
         epoch(install_epoch) {}
 };
 

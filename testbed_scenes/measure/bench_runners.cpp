@@ -68,7 +68,7 @@ std::vector<Variant> bench_variants() {
 
 bool supports(const Variant& v, Level level, bool is_float) {
   const MethodInfo& row = info(v.method);
-  return row.has(level) && (is_float || row.runs_double) &&
+  return row.has(level) && (is_float || row.runs_double()) &&
          (!row.needs_box2d() || runs_pairs<float>(v.method));
 }
 

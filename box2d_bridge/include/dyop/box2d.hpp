@@ -62,9 +62,9 @@ namespace dyop::box2d {
 /// (`b2CollidePolygons`, Box2D's own answer through the same path, for comparison).
 using Backend = Method;
 
-/// True for the registry's rows the plug-in offers (`MethodInfo::box2d_backend`): the filter of
+/// True for the registry's rows the plug-in offers (`MethodInfo::box2d_backend()`): the filter of
 /// `all_backends`, and of `parse_method` for a backend's name.
-constexpr bool is_backend(const MethodInfo& row) { return row.box2d_backend; }
+constexpr bool is_backend(const MethodInfo& row) { return row.box2d_backend(); }
 
 /// Every backend, in registry order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
 inline constexpr auto all_backends =
@@ -73,8 +73,8 @@ inline constexpr auto all_backends =
 /// Number of backends.
 inline constexpr int backend_count = static_cast<int>(all_backends.size());
 
-/// True when the plug-in offers `m` (`info(m).box2d_backend`).
-constexpr bool is_backend(Method m) { return info(m).box2d_backend; }
+/// True when the plug-in offers `m` (`info(m).box2d_backend()`).
+constexpr bool is_backend(Method m) { return info(m).box2d_backend(); }
 
 /// A backend's spelling is its method's (`dyop::name`).
 using dyop::name;

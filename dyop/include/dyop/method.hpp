@@ -81,6 +81,15 @@ inline constexpr std::uint8_t all_level_bits =
     level_bit(Level::Overlap) | level_bit(Level::Depth) | level_bit(Level::Contact) |
     level_bit(Level::Manifold);
 
+/// What a row can do beyond its entry and levels, as bits of `MethodInfo::traits`: named where
+/// the table is written, read through `MethodInfo`'s accessors.
+namespace trait {
+inline constexpr std::uint8_t runs_double = 1u << 0;    ///< has a double-precision version
+inline constexpr std::uint8_t warm_start = 1u << 1;     ///< keeps state between queries of a pair
+inline constexpr std::uint8_t box2d_backend = 1u << 2;  ///< offered by the Box2D plug-in
+inline constexpr std::uint8_t internal_edges = 1u << 3;  ///< honours `Query::internal_edges`
+}  // namespace trait
+
 /// One row of the registry.
 struct MethodInfo {
   Method method;  ///< the row's method
@@ -95,15 +104,20 @@ struct MethodInfo {
   /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth; Box2D: its
   /// manifold is always whole, so it is asked (and timed) at Manifold.
   std::uint8_t levels;
-  bool runs_double;    ///< has a double-precision version (Box2D runs in float only)
-  bool warm_start;     ///< keeps state between queries of the same pair (`LinCannyCache`)
-  bool box2d_backend;  ///< offered by the Box2D plug-in as a backend for triangle pairs
-  Accuracy accuracy;   ///< how exact it is by design
+  std::uint8_t traits;  ///< `trait` bits; read them through the accessors below
+  Accuracy accuracy;    ///< how exact it is by design
   PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
   PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
+
+  /// Has a double-precision version (Box2D runs in float only).
+  constexpr bool runs_double() const { return (traits & trait::runs_double) != 0; }
+  /// Keeps state between queries of the same pair (`LinCannyCache`).
+  constexpr bool warm_start() const { return (traits & trait::warm_start) != 0; }
+  /// Offered by the Box2D plug-in as a backend for triangle pairs.
+  constexpr bool box2d_backend() const { return (traits & trait::box2d_backend) != 0; }
   /// Honours `Query::internal_edges` (the exact `dyop` and `sat`); the others answer as if every
   /// axis were allowed.
-  bool internal_edges = false;
+  constexpr bool internal_edges() const { return (traits & trait::internal_edges) != 0; }
 
   /// True when it answers queries at `level`.
   constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }
@@ -140,34 +154,36 @@ Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& 
 inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_level_bits, true, false, true, Accuracy::Exact,
-     &detail::stateless<float, &dyop<float>>, &detail::stateless<double, &dyop<double>>, true},
+     all_level_bits, trait::runs_double | trait::box2d_backend | trait::internal_edges,
+     Accuracy::Exact, &detail::stateless<float, &dyop<float>>,
+     &detail::stateless<double, &dyop<double>>},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
-     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits, true,
-     false, true, Accuracy::Approximate, &detail::stateless<float, &dyop_fast<float>>,
-     &detail::stateless<double, &dyop_fast<double>>},
+     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits,
+     trait::runs_double | trait::box2d_backend, Accuracy::Approximate,
+     &detail::stateless<float, &dyop_fast<float>>, &detail::stateless<double, &dyop_fast<double>>},
     {Method::DyopPaper, "dyop-paper", nullptr, nullptr,
-     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_level_bits, true,
-     false, false, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
+     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_level_bits,
+     trait::runs_double, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
      &detail::stateless<double, &dyop_paper<double>>},
     {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
      "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
-     Entry::PerPair, all_level_bits, true, true, true, Accuracy::LocalDepth, &lin_canny<float>,
-     &lin_canny<double>},
+     Entry::PerPair, all_level_bits, trait::runs_double | trait::warm_start | trait::box2d_backend,
+     Accuracy::LocalDepth, &lin_canny<float>, &lin_canny<double>},
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
-     Entry::PerPair, all_level_bits, true, false, true, Accuracy::Exact,
-     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>, true},
+     Entry::PerPair, all_level_bits,
+     trait::runs_double | trait::box2d_backend | trait::internal_edges, Accuracy::Exact,
+     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
-     all_level_bits, true, false, true, Accuracy::ToTolerance,
+     all_level_bits, trait::runs_double | trait::box2d_backend, Accuracy::ToTolerance,
      &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},
     {Method::Batch, "batch", nullptr, nullptr,
      "sat's answer over structure-of-arrays input, AVX2 when the CPU has it", Entry::Batch,
-     static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)), true, false,
-     false, Accuracy::Exact, nullptr, nullptr},
+     static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)),
+     trait::runs_double, Accuracy::Exact, nullptr, nullptr},
     {Method::Box2D, "box2d", nullptr, nullptr,
      "Box2D 2.4's b2CollidePolygons, the production reference", Entry::Box2D,
-     level_bit(Level::Manifold), false, false, true, Accuracy::AbsoluteTolerance, nullptr,
+     level_bit(Level::Manifold), trait::box2d_backend, Accuracy::AbsoluteTolerance, nullptr,
      nullptr},
 };
 
@@ -194,11 +210,11 @@ constexpr const char* name(Method m) { return info(m).name; }
 /// "lin-canny-warm" for a warm-startable method, `name(m)` for the others.
 constexpr const char* variant_name(Method m, bool warm) {
   const MethodInfo& row = info(m);
-  if (!row.warm_start) return row.name;
+  if (!row.warm_start()) return row.name;
   return warm ? row.warm_name : row.cold_name;
 }
 
-/// A method as a comparison runs it: a warm-startable method (`info(method).warm_start`) either
+/// A method as a comparison runs it: a warm-startable method (`info(method).warm_start()`) either
 /// cold, every query from no state, or warm, each query from the state the pair's previous query
 /// left; the others have one way only (`warm` false).
 struct Variant {
@@ -222,7 +238,7 @@ std::vector<Variant> variants(Keep keep) {
   for (const MethodInfo& row : method_table) {
     if (!keep(row)) continue;
     out.push_back({row.method, false});
-    if (row.warm_start) out.push_back({row.method, true});
+    if (row.warm_start()) out.push_back({row.method, true});
   }
   return out;
 }
@@ -266,7 +282,7 @@ inline constexpr auto pair_methods =
     detail::select_methods<detail::count_methods(detail::is_per_pair)>(detail::is_per_pair);
 
 /// Runs method `m` on one pair. `cache` is used by the methods that keep warm-start state
-/// (`info(m).warm_start`; nullptr: cold start). `m` must be one of `pair_methods`; the others
+/// (`info(m).warm_start()`; nullptr: cold start). `m` must be one of `pair_methods`; the others
 /// (`Batch`, `Box2D`) answer `Invalid` here.
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,

@@ -113,7 +113,7 @@ struct Query {
   /// The status is the same either way: a gap inside the touching band is decided by the distance.
   Apart apart = Apart::Distance;
   /// The internal-edge rule's masks (see `InternalEdges`). Honoured by the exact methods
-  /// (`dyop`, `sat`; the others ignore them: `MethodInfo::internal_edges`). The status (and, for
+  /// (`dyop`, `sat`; the others ignore them: `MethodInfo::internal_edges()`). The status (and, for
   /// pairs apart, `separation` and `normal`) is still decided over all six axes, so a pair
   /// separated only along an internal edge stays apart, and a pair apart beyond `margin` is
   /// answered as without masks. Otherwise, when the masks allow the pair's least axis and its
