@@ -518,31 +518,35 @@ namespace dyop {
 namespace {
 
 // Two slivers along one diagonal, the small one 3e139 beyond the tip of one 1.4e149 long (found by
-// fuzz_batch; fuzz/corpus/methods/regress_sliver_tip_zero_overlap_double): the gap along the
-// separating edge normal is far below the coordinates' rounding and comes out as an overlap of
-// exactly 0, so the distance must decide. `sat`, `dyop` and the batch kernel all call the pair
-// apart at its distance.
-TEST(SliversEndToEnd, AZeroLeastOverlapIsDecidedByTheDistanceInEveryExactMethod) {
-  const double c[12] = {-6.2531702115077586e-269, 1.3403042625207296e-84,
-                        8.1968741050497943e+107,  8.1968741124263195e+107,
-                        8.196874112425652e+107,   8.1968741124263195e+107,
-                        -9.8683099107386407e+148, -9.8683099208633679e+148,
-                        -9.8683099208633679e+148, -9.8683099208633679e+148,
-                        -2.1482046286569577e+139, -2.1482046286569577e+139};
-  const auto a = Triangle<double>::make({c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]});
-  const auto b = Triangle<double>::make({c[6], c[7]}, {c[8], c[9]}, {c[10], c[11]});
-  ASSERT_TRUE(a.ok() && b.ok());
-  const double distance = std::sqrt(2.0) * 2.1482046286569577e+139;  // to the tip, about
-  for (const Result<double>& r : {sat(a.triangle, b.triangle), dyop::dyop(a.triangle, b.triangle)}) {
-    EXPECT_EQ(r.status, Status::Separated);
-    EXPECT_NEAR(r.separation, distance, 1e-6 * distance);
+// fuzz_batch and fuzz_sat; fuzz/corpus/methods/regress_sliver_tip_*_double): the gap along the
+// separating edge normal is far below the coordinates' rounding and comes out as a least overlap
+// of 0 or a little more, inside the touching band, so the distance must decide. `sat`, `dyop` and
+// the batch kernel all call the pair apart at its distance, with the tip on the diagonal (overlap
+// rounded to 0) and moved off it by one part in 3e13 (a small positive overlap).
+TEST(SliversEndToEnd, ALeastOverlapInsideTheBandIsDecidedByTheDistanceInEveryExactMethod) {
+  for (const double tip_x : {-2.1482046286569577e+139, -2.1482046286570254e+139}) {
+    const double c[12] = {-6.2531702115077586e-269, 1.3403042625207296e-84,
+                          8.1968741050497943e+107,  8.1968741124263195e+107,
+                          8.196874112425652e+107,   8.1968741124263195e+107,
+                          -9.8683099107386407e+148, -9.8683099208633679e+148,
+                          -9.8683099208633679e+148, -9.8683099208633679e+148,
+                          tip_x,                    -2.1482046286569577e+139};
+    const auto a = Triangle<double>::make({c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]});
+    const auto b = Triangle<double>::make({c[6], c[7]}, {c[8], c[9]}, {c[10], c[11]});
+    ASSERT_TRUE(a.ok() && b.ok());
+    const double distance = std::hypot(c[10], c[11]);  // to the tip, within 1e-30 relative
+    for (const Result<double>& r :
+         {sat(a.triangle, b.triangle), dyop::dyop(a.triangle, b.triangle)}) {
+      EXPECT_EQ(r.status, Status::Separated) << tip_x;
+      EXPECT_NEAR(r.separation, distance, 1e-9 * distance) << tip_x;
+    }
+    workloads::BatchArrays<double> arrays(1, [&](std::size_t, int side, int i) {
+      return Vec2<double>(c[6 * side + 2 * i], c[6 * side + 2 * i + 1]);
+    });
+    ASSERT_EQ(penetrate_batch(arrays.pairs(), Level::Depth, arrays.out()), BatchError::None);
+    EXPECT_EQ(arrays.status[0], Status::Separated) << tip_x;
+    EXPECT_NEAR(arrays.separation[0], distance, 1e-9 * distance) << tip_x;
   }
-  workloads::BatchArrays<double> arrays(1, [&](std::size_t, int side, int i) {
-    return Vec2<double>(c[6 * side + 2 * i], c[6 * side + 2 * i + 1]);
-  });
-  ASSERT_EQ(penetrate_batch(arrays.pairs(), Level::Depth, arrays.out()), BatchError::None);
-  EXPECT_EQ(arrays.status[0], Status::Separated);
-  EXPECT_NEAR(arrays.separation[0], distance, 1e-6 * distance);
 }
 
 }  // namespace
