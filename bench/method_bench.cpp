@@ -18,7 +18,7 @@
 #include "workloads/pair_sets.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "box2d_reference/box2d_pair_set.hpp"
-#include "scenes/contact_stream.hpp"
+#include "experiments/contact_stream.hpp"
 #endif
 
 namespace {
@@ -62,7 +62,7 @@ template <class T>
 void bm_warm(benchmark::State& state, Method m, InputClass c, Level l) {
   const PairSet<T>& s = pairs_of<T>(c);
   const Query<T> q{l};
-  std::vector<LinCannyCache> cache(s.size());
+  std::vector<PairState> cache(s.size());
   for (std::size_t k = 0; k < s.size(); ++k) penetrate(m, s.a[k], s.b[k], q, &cache[k]);
   std::size_t i = 0;
   bool next_frame = true;
@@ -119,11 +119,11 @@ void bm_box2d(benchmark::State& state, InputClass c) {
 // dropped bodies have landed, so the stream holds first contacts and resting pairs alike.
 constexpr int kStreamSteps = 300;
 
-const scenes::ContactStream& stream_of(const std::string& scene) {
-  static std::map<std::string, scenes::ContactStream> streams;
+const experiments::ContactStream& stream_of(const std::string& scene) {
+  static std::map<std::string, experiments::ContactStream> streams;
   auto it = streams.find(scene);
   if (it == streams.end()) {
-    it = streams.emplace(scene, scenes::record_stream(scene, kStreamSteps, kSeed)).first;
+    it = streams.emplace(scene, experiments::record_stream(scene, kStreamSteps, kSeed)).first;
   }
   return it->second;
 }
@@ -132,13 +132,13 @@ const scenes::ContactStream& stream_of(const std::string& scene) {
 // each wrap, so every pass over the stream starts as the world did.
 void bm_stream(benchmark::State& state, const std::string& scene,
                std::optional<box2d::Backend> backend) {
-  const scenes::ContactStream& s = stream_of(scene);
+  const experiments::ContactStream& s = stream_of(scene);
   std::vector<box2d::ContactMemory> memory(s.contacts.size());
   b2Manifold manifold;
   std::size_t i = 0;
   for (auto _ : state) {
-    const scenes::StreamCall& call = s.calls[i];
-    const scenes::StreamContact& c = s.contacts[static_cast<std::size_t>(call.contact)];
+    const experiments::StreamCall& call = s.calls[i];
+    const experiments::StreamContact& c = s.contacts[static_cast<std::size_t>(call.contact)];
     if (backend) {
       box2d::collide_polygons(&manifold, *backend, c.shape_a, call.xf_a, c.shape_b, call.xf_b,
                               &memory[static_cast<std::size_t>(call.contact)]);

@@ -104,17 +104,18 @@ void check_batch(const FuzzInput& in, const TriangleOrError<T>& a, const Triangl
   }
 }
 
-// A Lin–Canny cache from arbitrary bytes: out-of-range fields must start cold, not index past.
-LinCannyCache cache_from(const FuzzInput& in) {
+// A pair's state from arbitrary bytes: out-of-range fields must start cold, not index past.
+PairState state_from(const FuzzInput& in) {
   ByteReader bytes(in.rest, in.rest_size);
-  LinCannyCache c;
+  PairState state;
+  LinCannyCache& c = state.lin_canny;
   c.valid = (bytes.get<std::uint8_t>() & 1u) != 0;
   c.type_a = static_cast<Feature::Type>(bytes.get<std::uint8_t>() % 4);
   c.type_b = static_cast<Feature::Type>(bytes.get<std::uint8_t>() % 4);
   c.index_a = bytes.get<std::uint8_t>();
   c.index_b = bytes.get<std::uint8_t>();
   c.depth_axis = bytes.get<std::uint8_t>();
-  return c;
+  return state;
 }
 
 template <class T>
@@ -130,7 +131,7 @@ void run(const FuzzInput& in) {
   const Method m = g_method;
   const T size = std::max(a.triangle.size(), b.triangle.size());
   const T band = touching_tolerance<T>() * size;
-  LinCannyCache cache = cache_from(in);
+  PairState cache = state_from(in);
   Status depth_status = Status::Invalid;
   for (Level level : {Level::Overlap, Level::Depth, Level::Contact, Level::Manifold}) {
     Query<T> q{level};

@@ -10,9 +10,9 @@
 #include "dyop/method.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/input_classes.hpp"
-#include "report/stress_report.hpp"
+#include "experiments/stress.hpp"
 
-namespace dyop::report {
+namespace dyop::experiments {
 namespace {
 
 using workloads::InputClass;
@@ -182,4 +182,4 @@ TEST(StressClasses, ScalesSpanSixteenOrdersOfMagnitude) {
 }
 
 }  // namespace
-}  // namespace dyop::report
+}  // namespace dyop::experiments

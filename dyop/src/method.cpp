@@ -11,19 +11,19 @@ std::optional<Method> parse_method(std::string_view s, RowFilter keep) {
 
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
-                    LinCannyCache* cache) {
+                    PairState* state) {
   const PairFunction<T> run = info(m).run<T>();
   if (run == nullptr) {
     Result<T> invalid;
     invalid.reason = InvalidReason::NotPairMethod;
     return invalid;
   }
-  return run(a, b, query, cache);
+  return run(a, b, query, state);
 }
 
 template Result<float> penetrate(Method, const Triangle<float>&, const Triangle<float>&,
-                                 const Query<float>&, LinCannyCache*);
+                                 const Query<float>&, PairState*);
 template Result<double> penetrate(Method, const Triangle<double>&, const Triangle<double>&,
-                                  const Query<double>&, LinCannyCache*);
+                                  const Query<double>&, PairState*);
 
 }  // namespace dyop

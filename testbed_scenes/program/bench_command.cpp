@@ -42,31 +42,31 @@ constexpr int kQuickThreadSteps = 120;
 constexpr int kQuickThreadRuns = 3;
 
 int run(const BenchArgs& args) {
-  report::BenchOptions options;
+  experiments::BenchOptions options;
   options.quick = args.quick;
   // With `--json -` standard output carries the JSON alone; the tables go to standard error.
   std::ostream& tables = args.json == "-" ? std::cerr : std::cout;
-  const std::vector<report::BenchRecord> records = report::run_bench(options, std::cerr);
-  report::write_table(records, tables);
+  const std::vector<experiments::BenchRecord> records = experiments::run_bench(options, std::cerr);
+  report::bench_records(records).write_table(tables);
   std::string sections;  // the report's scaling and streams sections
   // Created before the sections write into it; when it cannot be, its first problem says so.
   std::optional<report::ReportDirectory> dir;
   if (!args.out.empty()) dir.emplace(args.out);
 #ifdef DYOP_WITH_BOX2D
   if (!args.no_scaling) {
-    scenes::ScalingOptions scaling;
+    experiments::ScalingOptions scaling;
     scaling.steps = args.quick ? kQuickScalingSteps : kScalingSteps;
-    const std::vector<scenes::ScalingRecord> rain = scenes::run_rain_scaling(scaling, std::cerr);
+    const std::vector<experiments::ScalingRecord> rain = experiments::run_rain_scaling(scaling, std::cerr);
     tables << '\n';
-    report::write_scaling_table(rain, tables);
+    report::scaling_records(rain).write_table(tables);
     if (dir && dir->created()) sections = report::write_scaling_outputs(rain, *dir);
   }
   if (!args.no_threads) {
-    scenes::ThreadScalingOptions threads;
+    experiments::ThreadScalingOptions threads;
     threads.steps = args.quick ? kQuickThreadSteps : kThreadSteps;
     threads.runs = args.quick ? kQuickThreadRuns : kThreadRuns;
-    const std::vector<scenes::ThreadScalingRecord> pool =
-        scenes::run_thread_scaling(threads, std::cerr);
+    const std::vector<experiments::ThreadScalingRecord> pool =
+        experiments::run_thread_scaling(threads, std::cerr);
     tables << '\n';
     report::write_thread_scaling_table(pool, threads.scene, tables);
     if (dir && dir->created()) {
@@ -74,20 +74,20 @@ int run(const BenchArgs& args) {
     }
   }
   if (!args.no_streams) {
-    scenes::StreamOptions streams;
+    experiments::StreamOptions streams;
     if (args.quick) {
       streams.steps = kQuickStreamSteps;
       streams.passes = kQuickStreamPasses;
     }
-    const std::vector<scenes::StreamResult> results = scenes::run_streams(streams, std::cerr);
+    const std::vector<experiments::StreamResult> results = experiments::run_streams(streams, std::cerr);
     tables << '\n';
-    report::write_stream_table(results, tables);
+    report::stream_records(results).write_table(tables);
     if (dir && dir->created()) sections += report::write_stream_outputs(results, *dir);
   }
 #endif
   if (!args.json.empty()) {
     const std::optional<report::Problem> problem = report::write_output(
-        args.json, std::cout, [&](std::ostream& o) { report::write_json(records, o); });
+        args.json, std::cout, [&](std::ostream& o) { report::write_json_document(report::bench_records(records).json(), o); });
     if (problem) {
       std::cerr << "dyop bench: " << problem->message << '\n';
       return exit_code_for({*problem});

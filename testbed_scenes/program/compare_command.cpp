@@ -20,6 +20,7 @@ namespace dyop::cli {
 
 // The command is about scenes throughout; their names read better unqualified.
 using namespace dyop::scenes;
+using namespace dyop::experiments;
 using namespace dyop::report;
 
 int run_compare_command(const CompareOptions& options, std::ostream& out, std::ostream& err) {
@@ -53,7 +54,7 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
 }
 
 void add_compare_command(CLI::App& app, int& exit_code) {
-  auto options = std::make_shared<scenes::CompareOptions>();
+  auto options = std::make_shared<experiments::CompareOptions>();
   auto steps = std::make_shared<int>(0);
   std::vector<std::string> names;
   for (const scenes::SceneInfo& s : scenes::scene_catalog()) names.push_back(s.name);

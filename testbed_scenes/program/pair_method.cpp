@@ -1,6 +1,6 @@
 #include "program/pair_method.hpp"
 
-#include "measure/pair_function.hpp"
+#include "adapters/pair_function.hpp"
 
 namespace dyop::cli {
 namespace {
@@ -12,9 +12,9 @@ Vec2<double> widen(const Vec2<float>& v) { return v.cast<double>(); }
 std::vector<PairMethod> pairs_methods() {
   std::vector<PairMethod> out;
   for (const MethodInfo& row : method_table) {
-    if (!measure::runs_pairs<float>(row.method)) continue;
-    out.push_back({row.method, row.name, measure::pair_function<double>(row.method),
-                   measure::pair_function<float>(row.method)});
+    if (!adapters::runs_pairs<float>(row.method)) continue;
+    out.push_back({row.method, row.name, adapters::pair_function<double>(row.method),
+                   adapters::pair_function<float>(row.method)});
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The methods `dyop pairs` can run on a pair of triangles: every row of the registry
-/// (`dyop/method.hpp`) that answers single pairs in this build (`measure/pair_function.hpp`):
+/// (`dyop/method.hpp`) that answers single pairs in this build (`adapters/pair_function.hpp`):
 /// the library's per-pair methods, and Box2D's own `b2CollidePolygons` when built with Box2D.
 
 #include <string>

@@ -11,7 +11,8 @@
 
 #include "program/commands.hpp"
 #include "report/output.hpp"
-#include "scenes/metrics_io.hpp"
+#include "report/svg.hpp"
+#include "report/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
@@ -33,7 +34,7 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
       << "  kinetic energy " << m.kinetic_energy_final << " J";
   if (m.top_displacement) out << ", top displacement " << *m.top_displacement << " m";
   if (m.fallbacks) out << ", fallbacks to Box2D " << *m.fallbacks;
-  out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << hash_hex(m.hash) << '\n';
+  out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << report::hash_hex(m.hash) << '\n';
   if (m.slide) {
     out << "  sliding bodies: largest |vy| " << m.slide->max_vertical_speed << " m/s, |w| "
         << m.slide->max_angular_speed << " rad/s, smallest travel " << 100 * m.slide->min_travel
@@ -112,8 +113,8 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     return exit_io_error;
   }
   write_summary(m, summary);
-  if (json) write_json(m, json->stream());
-  if (svg) write_svg(final_state, svg->stream());
+  if (json) report::write_json(m, json->stream());
+  if (svg) report::write_svg(final_state, svg->stream());
   std::vector<report::Problem> problems;
   for (std::optional<report::Output>* o : {&json, &svg}) {
     if (!*o) continue;

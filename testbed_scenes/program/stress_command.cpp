@@ -16,8 +16,8 @@ struct StressArgs {
   std::string precision = "both";
   std::string json;
   std::string markdown;
-  int pairs = report::StressOptions{}.pairs;
-  std::uint64_t seed = report::StressOptions{}.seed;
+  int pairs = experiments::StressOptions{}.pairs;
+  std::uint64_t seed = experiments::StressOptions{}.seed;
   bool check = false;
 };
 
@@ -26,14 +26,14 @@ int run(const StressArgs& args) {
     std::cerr << "dyop stress: --json and --markdown cannot both write to standard output\n";
     return exit_usage_error;
   }
-  report::StressOptions options;
+  experiments::StressOptions options;
   options.pairs = args.pairs;
   options.seed = args.seed;
   options.run_double = args.precision != "float";
   options.run_float = args.precision != "double";
-  const std::vector<report::StressRecord> records = report::run_stress(options, std::cerr);
+  const std::vector<experiments::StressRecord> records = experiments::run_stress(options, std::cerr);
   // Standard output carries one thing: the table, or what was asked for on "-".
-  if (args.json != "-" && args.markdown != "-") report::write_table(records, std::cout);
+  if (args.json != "-" && args.markdown != "-") report::stress_records(records).write_table(std::cout);
   std::vector<report::Problem> problems;
   auto write = [&](const std::string& path, auto&& body) {
     if (path.empty()) return;
@@ -42,9 +42,9 @@ int run(const StressArgs& args) {
       problems.push_back(*p);
     }
   };
-  write(args.json, [&](std::ostream& o) { report::write_json(records, o); });
+  write(args.json, [&](std::ostream& o) { report::write_json_document(report::stress_records(records).json(), o); });
   write(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
-  const std::vector<std::string> broken = report::broken_promises(records);
+  const std::vector<std::string> broken = experiments::broken_promises(records);
   for (const std::string& b : broken) std::cerr << "dyop stress: broken promise: " << b << '\n';
   std::cerr << "dyop stress: " << records.size() << " records, "
             << (broken.empty() ? "every promise held" : std::to_string(broken.size()) + " broken promises")

@@ -1,62 +1,28 @@
 #pragma once
 /// \file
-/// `dyop bench`: run time against error for every runner, input class, query level and precision,
-/// with every time also given as a ratio to Box2D's `b2CollidePolygons` measured in the same run.
-///
-/// Error is measured against the exact rational reference (`exact_reference/exact_reference.hpp`)
-/// on the pairs exactly as the precision sees them (float runs get float-rounded input), at
-/// `Level::Depth`: |depth − exact depth| relative to the pair's size (the diagonal of the union
-/// of both bounding boxes). The same error figures stand on every level's record of a runner.
+/// `dyop bench`'s report: the records of `experiments/bench.hpp` as the aligned table, CSV, JSON,
+/// the run-time-against-error chart and `report.md`.
 
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "experiments/bench.hpp"
+#include "report/records.hpp"
 #include "report/report_directory.hpp"
 
 namespace dyop::report {
 
-struct BenchOptions {
-  bool quick = false;   ///< fewer timed passes of ≥ 20 ms (5 instead of 21); 8192 pairs each
-  int pairs = 8192;     ///< distinct pairs per class
-};
-
-/// One line of the report.
-struct BenchRecord {
-  std::string method;     ///< runner name, "batch", "box2d", "lin-canny-warm", ...
-  std::string cls;        ///< input class
-  std::string level;      ///< "overlap", "depth", "contact", "manifold"
-  std::string precision;  ///< "float" or "double"
-  int pairs = 0;          ///< pairs timed and checked
-  double ns_per_pair = 0;       ///< median over the timed passes
-  double ratio_vs_box2d = 0;    ///< ns_per_pair / box2d's (same class, float, manifold)
-  double err_max = 0;           ///< max |depth error| / pair size
-  double err_mean = 0;          ///< mean of the same
-  double err_p99 = 0;           ///< 99th percentile of the same
-  double exact_fraction = 0;    ///< fraction of pairs with |depth error| / size ≤ 1e-9
-  double normal_err_max = 0;    ///< max angle (rad) to sat's normal on pairs both call penetrating
-  double normal_err_mean = 0;   ///< mean of the same
-  int misclassified = 0;        ///< penetrating vs not, against the exact sign, outside the band
-  int invalid = 0;              ///< pairs the runner answered Invalid (left out of the errors)
-};
-
-/// Runs everything; one progress line per runner and class on `progress`.
-std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& progress);
-
-/// The aligned table printed by `dyop bench`.
-void write_table(const std::vector<BenchRecord>& records, std::ostream& out);
-
-/// A JSON list of records (every field of `BenchRecord`; a non-finite figure is null).
-void write_json(const std::vector<BenchRecord>& records, std::ostream& out);
-
-/// The CSV behind the report (header and one line per record).
-void write_csv(const std::vector<BenchRecord>& records, std::ostream& out);
+/// The records, column by column: the aligned table printed by `dyop bench`, `bench.csv`,
+/// `bench.json` (every field of `BenchRecord`; a non-finite figure is null) and the Markdown
+/// table.
+Records bench_records(const std::vector<experiments::BenchRecord>& records);
 
 /// `report.md`, `bench.csv`, `bench.json` and the chart `time_vs_error.svg` in `dir` (gnuplot;
 /// log–log, one point per method at the Depth level, Pareto front drawn); `sections` (Markdown,
 /// e.g. the scaling section) is appended to the report. What was not written is in
 /// `dir.problems()`.
-void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir,
+void write_outputs(const std::vector<experiments::BenchRecord>& records, ReportDirectory& dir,
                    const std::string& sections = {});
 
 }  // namespace dyop::report

@@ -12,6 +12,7 @@ namespace dyop::report::detail {
 namespace {
 
 using namespace dyop::scenes;
+using namespace dyop::experiments;
 
 // The errors below this are drawn at this value on the log axis (exact methods have zeros).
 constexpr double kErrorFloor = 1e-9;

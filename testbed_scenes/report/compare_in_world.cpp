@@ -8,57 +8,59 @@
 
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
-#include "scenes/progress.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::report {
 namespace {
 
-using scenes::InWorldRatio;
+using experiments::InWorldRatio;
 
 // A missing figure in a chart's data file (gnuplot's missing value).
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-void write_in_world_table(const std::vector<InWorldRatio>& rows, std::ostream& out) {
-  out << "| scene | backend | steps | runs | narrow phase ms own | narrow phase ms | × own | "
-         "step ms own | step ms | × own | contact updates own / plug-in |\n"
-         "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+Records in_world_records(const std::vector<InWorldRatio>& rows) {
+  Records out({{"scene", "scene", "", -14},
+               {"backend", "backend", "", -10},
+               {"steps", "steps", "", 6},
+               {"repetitions", "runs", "runs", 5},
+               {"narrowphase_ms_own", "narrow phase ms own", "np_ms_own", 10},
+               {"narrowphase_ms", "narrow phase ms", "np_ms", 10},
+               {"narrowphase_ratio", "× own", "np_xown", 8},
+               {"step_ms_own", "step ms own", "step_ms_own", 11},
+               {"step_ms", "step ms", "", 10},
+               {"step_ratio", "× own", "step_xown", 9},
+               {"step_ms_median_own", "", "", 10, where::files},
+               {"step_ms_median", "", "", 10, where::files},
+               {"contact_updates_own", "contact updates own", "updates_own", 11},
+               {"contact_updates", "contact updates, plug-in", "updates", 10}});
   for (const InWorldRatio& r : rows) {
-    out << "| " << r.scene << " | " << r.backend << " | " << r.steps << " | " << r.repetitions
-        << " | " << fmt("%.2f", r.own.narrowphase_ms) << " | " << fmt("%.2f", r.plugin.narrowphase_ms)
-        << " | " << fmt("%.2f", r.narrowphase_ratio()) << " | " << fmt("%.1f", r.own.step_ms)
-        << " | " << fmt("%.1f", r.plugin.step_ms) << " | " << fmt("%.2f", r.step_ratio()) << " | "
-        << r.own.contact_updates << " / " << r.plugin.contact_updates << " |\n";
+    out.add({Value::text(r.scene), Value::text(r.backend), Value::count(r.steps),
+             Value::count(r.repetitions), Value::number(r.own.narrowphase_ms, "%.2f"),
+             Value::number(r.plugin.narrowphase_ms, "%.2f"),
+             Value::number(r.narrowphase_ratio(), "%.2f"), Value::number(r.own.step_ms, "%.1f"),
+             Value::number(r.plugin.step_ms, "%.1f"), Value::number(r.step_ratio(), "%.2f"),
+             Value::number(r.own.step_ms_median, "%.3f"),
+             Value::number(r.plugin.step_ms_median, "%.3f"),
+             Value::count(static_cast<std::int64_t>(r.own.contact_updates)),
+             Value::count(static_cast<std::int64_t>(r.plugin.contact_updates))});
   }
-}
-
-void write_in_world_csv(const std::vector<InWorldRatio>& rows, std::ostream& out) {
-  out << "scene,backend,steps,repetitions,narrowphase_ms_own,narrowphase_ms,narrowphase_ratio,"
-         "step_ms_own,step_ms,step_ratio,step_ms_median_own,step_ms_median,contact_updates_own,"
-         "contact_updates\n";
-  for (const InWorldRatio& r : rows) {
-    out << r.scene << ',' << r.backend << ',' << r.steps << ',' << r.repetitions << ','
-        << fmt("%.6g", r.own.narrowphase_ms) << ',' << fmt("%.6g", r.plugin.narrowphase_ms) << ','
-        << fmt("%.6g", r.narrowphase_ratio()) << ',' << fmt("%.6g", r.own.step_ms) << ','
-        << fmt("%.6g", r.plugin.step_ms) << ',' << fmt("%.6g", r.step_ratio()) << ','
-        << fmt("%.6g", r.own.step_ms_median) << ',' << fmt("%.6g", r.plugin.step_ms_median) << ','
-        << r.own.contact_updates << ',' << r.plugin.contact_updates << '\n';
-  }
+  return out;
 }
 
 void InWorldSection::run(const SectionContext& c) {
-  using scenes::detail::fixed;
+  using experiments::detail::fixed;
   quick_ = c.options.quick;
-  const int reps = scenes::in_world_repetitions(c.options.quick);
+  const int reps = experiments::in_world_repetitions(c.options.quick);
   for (const scenes::SceneInfo* s : c.scenes) {
     if (std::string(s->name) == "paper") continue;  // no Box2D world
     const int steps = c.steps(*s);
-    for (box2d::Backend b : scenes::in_world_backends(c.options.quick)) {
+    for (box2d::Backend b : experiments::in_world_backends(c.options.quick)) {
       const double start = c.elapsed();
       rows_.push_back(
-          scenes::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
+          experiments::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
             return scenes::run_scene(s->name, r, steps, c.options.seed, c.options.skips);
           }));
       const InWorldRatio& m = rows_.back();
@@ -74,13 +76,13 @@ void InWorldSection::run(const SectionContext& c) {
 
 void InWorldSection::write_tables(std::ostream& out) const {
   out << "\nIn the world, against Box2D's own contact (plug-in not installed):\n\n";
-  write_in_world_table(rows_, out);
+  in_world_records(rows_).write_markdown(out);
 }
 
 // Narrow-phase and step ratios to Box2D's own contact: clustered bars, one group per scene, one
 // bar per backend, narrow phase above and step below.
 void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
-  dir.write("inworld.csv", [&](std::ostream& o) { write_in_world_csv(rows_, o); });
+  dir.write("inworld.csv", [&](std::ostream& o) { in_world_records(rows_).write_csv(o); });
   std::vector<std::string> backends;
   std::vector<std::string> scene_order;
   for (const InWorldRatio& r : rows_) {
@@ -133,7 +135,7 @@ void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const
     << "What a user who installs the plug-in feels: each Box2D scene runs under Box2D's own "
        "contact with the plug-in **not installed** (`"
     << scenes::box2d_own << "`) and under the backend, alternately (own, backend, own, backend, "
-    << "...; " << scenes::in_world_repetitions(quick_)
+    << "...; " << experiments::in_world_repetitions(quick_)
     << " runs of each) in this process, same seed and steps as the table above. Each side's "
        "figure is the median over its runs of the narrow phase (`b2Profile::collide`, summed "
        "over steps 2..N) and of the whole step (`b2World::Step`'s wall time, summed over the "
@@ -144,7 +146,7 @@ void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const
     << std::thread::hardware_concurrency()
     << " hardware threads; ratios move between machines of one kind, name the machine with "
        "them.\n\n";
-  write_in_world_table(rows_, o);
+  in_world_records(rows_).write_markdown(o);
   o << '\n';
   charts.image(o, "inworld", "narrow-phase and step time against Box2D's own contact");
 }

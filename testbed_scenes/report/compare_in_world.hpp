@@ -1,14 +1,15 @@
 #pragma once
 /// \file
 /// `dyop compare`'s in-world section: every Box2D scene selected, under each backend of
-/// `scenes::in_world_backends`, against Box2D's own contact (the plug-in not installed), runs
-/// alternating in one process (`scenes/in_world.hpp`).
+/// `experiments::in_world_backends`, against Box2D's own contact (the plug-in not installed), runs
+/// alternating in one process (`experiments/in_world.hpp`).
 
 #include <ostream>
 #include <vector>
 
 #include "report/compare_section.hpp"
-#include "scenes/in_world.hpp"
+#include "report/records.hpp"
+#include "experiments/in_world.hpp"
 
 namespace dyop::report {
 
@@ -22,17 +23,14 @@ class InWorldSection : public CompareSection {
   std::string files() const override;
 
   /// One row per scene and backend, in run order.
-  const std::vector<scenes::InWorldRatio>& rows() const { return rows_; }
+  const std::vector<experiments::InWorldRatio>& rows() const { return rows_; }
 
  private:
   bool quick_ = false;
-  std::vector<scenes::InWorldRatio> rows_;
+  std::vector<experiments::InWorldRatio> rows_;
 };
 
-/// The in-world table (Markdown): one row per scene and backend.
-void write_in_world_table(const std::vector<scenes::InWorldRatio>& rows, std::ostream& out);
-
-/// The in-world CSV (header and one line per scene and backend).
-void write_in_world_csv(const std::vector<scenes::InWorldRatio>& rows, std::ostream& out);
+/// The records, column by column, one per scene and backend (the Markdown table, the CSV).
+Records in_world_records(const std::vector<experiments::InWorldRatio>& rows);
 
 }  // namespace dyop::report

@@ -5,13 +5,14 @@
 #include "report/compare_report_files.hpp"
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
-#include "scenes/metrics_io.hpp"
+#include "report/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::report::detail {
 namespace {
 
 using namespace dyop::scenes;
+using namespace dyop::experiments;
 
 class Markdown {
  public:

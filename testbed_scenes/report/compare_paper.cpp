@@ -6,8 +6,8 @@
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
-#include "scenes/paper.hpp"
-#include "scenes/progress.hpp"
+#include "experiments/paper_experiment.hpp"
+#include "experiments/progress.hpp"
 
 namespace dyop::report {
 namespace {
@@ -23,10 +23,10 @@ class PaperSection : public CompareSection {
       if (std::string(s->name) != "paper") continue;
       const double start = c.elapsed();
       const int steps = c.steps(*s);
-      const int reps = paper_repetitions(c.options.quick);
-      experiment_ = paper::run_experiment(c.options.seed, steps, reps);
+      const int reps = experiments::paper_repetitions(c.options.quick);
+      experiment_ = experiments::paper::run_experiment(c.options.seed, steps, reps);
       c.progress << "[paper] Figure 7 experiment, " << steps << " steps, " << reps
-                 << " repetitions of 8 methods: " << scenes::detail::fixed(c.elapsed() - start, 1)
+                 << " repetitions of 8 methods: " << experiments::detail::fixed(c.elapsed() - start, 1)
                  << " s\n";
     }
   }
@@ -56,7 +56,7 @@ class PaperSection : public CompareSection {
   }
 
   void write_markdown(std::ostream& o, const Charts& charts) const override {
-    const paper::Experiment& e = *experiment_;
+    const experiments::paper::Experiment& e = *experiment_;
     o << "## The paper's experiment (scene `paper`)\n\n"
       << "The paper moves 10 pre-defined irregular triangle types on pre-defined paths for 90 "
          "steps, tests them against each other and plots per type the time DyOP-PD and "
@@ -64,12 +64,12 @@ class PaperSection : public CompareSection {
          "triangles nor the paths; ours follow. Every step, each pair whose bounding boxes "
          "overlap goes to every method, in float, at depth level; errors are against the exact "
          "rational reference. Seed "
-      << e.seed << ", steps of " << fmt("%.4f", paper::step_seconds)
-      << " s from t = " << fmt("%.1f", paper::start_time(e.seed)) << " s.\n\n"
+      << e.seed << ", steps of " << fmt("%.4f", scenes::paper::step_seconds)
+      << " s from t = " << fmt("%.1f", scenes::paper::start_time(e.seed)) << " s.\n\n"
       << "Triangle types (vertices about the centroid):\n\n| type | v0 | v1 | v2 | longest edge |\n"
       << "|--:|---|---|---|--:|\n";
-    for (int k = 0; k < paper::type_count; ++k) {
-      const auto& t = paper::triangle_types()[k];
+    for (int k = 0; k < scenes::paper::type_count; ++k) {
+      const auto& t = scenes::paper::triangle_types()[k];
       o << "| " << k + 1 << " |";
       for (int i = 0; i < 3; ++i) {
         o << " (" << fmt("%.3f", t[i].x()) << ", " << fmt("%.3f", t[i].y()) << ") |";
@@ -81,8 +81,8 @@ class PaperSection : public CompareSection {
     o << "\nPaths: type k is at (cx + ax·sin(wx·t + phase), cy + ay·sin(wy·t)), turned by "
          "angle0 + spin·t:\n\n| type | cx | cy | ax | ay | wx | wy | phase | angle0 | spin |\n"
       << "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-    for (int k = 0; k < paper::type_count; ++k) {
-      const paper::Path& p = paper::paths()[k];
+    for (int k = 0; k < scenes::paper::type_count; ++k) {
+      const scenes::paper::Path& p = scenes::paper::paths()[k];
       o << "| " << k + 1;
       for (double v : {p.cx, p.cy, p.ax, p.ay, p.wx, p.wy, p.phase, p.angle0, p.spin}) {
         o << " | " << fmt("%.2f", v);
@@ -100,8 +100,8 @@ class PaperSection : public CompareSection {
  private:
   // The Figure-7 table and the per-method summary (Markdown).
   void tables(std::ostream& out) const {
-    const paper::Experiment& e = *experiment_;
-    const auto& types = paper::triangle_types();
+    const experiments::paper::Experiment& e = *experiment_;
+    const auto& types = scenes::paper::triangle_types();
     out << "Time to compute the penetration depth of every bounding-box-overlapping pair a "
            "triangle type is in, over all "
         << e.steps << " steps (µs, median of " << e.repetitions << " repetitions):\n\n"
@@ -110,7 +110,7 @@ class PaperSection : public CompareSection {
     out << " lin-canny-warm / dyop | lin-canny-cold / dyop |\n|--:|--:|--:|";
     for (std::size_t i = 0; i < e.methods.size() + 2; ++i) out << "--:|";
     out << '\n';
-    auto figures = [&](const Variant& which) -> const paper::MethodFigures& {
+    auto figures = [&](const Variant& which) -> const experiments::paper::MethodFigures& {
       for (const auto& m : e.methods) {
         if (m.method == which) return m;
       }
@@ -119,7 +119,7 @@ class PaperSection : public CompareSection {
     const auto& dyop = figures({Method::Dyop, false});
     const auto& warm = figures({Method::LinCanny, true});
     const auto& cold = figures({Method::LinCanny, false});
-    for (int k = 0; k < paper::type_count; ++k) {
+    for (int k = 0; k < scenes::paper::type_count; ++k) {
       const auto& t = types[k];
       const double size =
           std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
@@ -130,7 +130,7 @@ class PaperSection : public CompareSection {
     }
     out << "\nEvery method over the same pairs (" << e.pairs_tested
         << " bounding-box-overlapping pairs, " << e.pairs_penetrating
-        << " of them penetrating; and all " << paper::pair_count << " pairs × " << e.steps
+        << " of them penetrating; and all " << scenes::paper::pair_count << " pairs × " << e.steps
         << " steps without a broad phase), errors against the exact rational reference:\n\n"
         << "| method | µs, overlapping pairs | ns/pair | × dyop | µs, all pairs | × dyop "
            "| depth error max | depth error mean | misclassified | invalid |\n"
@@ -153,12 +153,12 @@ class PaperSection : public CompareSection {
 
   // type, size, then one column per method (µs); `sep` ',' for CSV, ' ' for gnuplot.
   void figure7_data(std::ostream& o, char sep) const {
-    const paper::Experiment& e = *experiment_;
+    const experiments::paper::Experiment& e = *experiment_;
     o << "type" << sep << "size" << sep << "pairs";
     for (const auto& m : e.methods) o << sep << name(m.method);
     o << '\n';
-    for (int k = 0; k < paper::type_count; ++k) {
-      const auto& t = paper::triangle_types()[k];
+    for (int k = 0; k < scenes::paper::type_count; ++k) {
+      const auto& t = scenes::paper::triangle_types()[k];
       const double size =
           std::max({(t[1] - t[0]).norm(), (t[2] - t[1]).norm(), (t[0] - t[2]).norm()});
       o << k + 1 << sep << fmt("%.4g", size) << sep << e.pairs_per_type[k];
@@ -168,7 +168,7 @@ class PaperSection : public CompareSection {
   }
 
   void methods_csv(std::ostream& o) const {
-    const paper::Experiment& e = *experiment_;
+    const experiments::paper::Experiment& e = *experiment_;
     o << "method,us_overlapping_pairs,ns_per_pair,us_all_pairs,error_max,error_mean,"
          "misclassified,invalid,pairs_tested,pairs_penetrating,steps,repetitions\n";
     for (const auto& m : e.methods) {
@@ -180,7 +180,7 @@ class PaperSection : public CompareSection {
     }
   }
 
-  std::optional<paper::Experiment> experiment_;
+  std::optional<experiments::paper::Experiment> experiment_;
 };
 
 }  // namespace

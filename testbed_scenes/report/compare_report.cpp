@@ -6,8 +6,8 @@
 
 #include "report/compare_report_files.hpp"
 #include "report/format.hpp"
-#include "scenes/metrics_io.hpp"
-#include "scenes/svg.hpp"
+#include "report/metrics_io.hpp"
+#include "report/svg.hpp"
 
 namespace dyop::report {
 namespace detail {
@@ -31,20 +31,20 @@ const SceneMetrics* row(const CompareRun& run, const std::string& scene,
 }  // namespace detail
 
 std::vector<Problem> write_report(const Comparison& comparison) {
-  const scenes::CompareRun& run = comparison.main;
+  const experiments::CompareRun& run = comparison.main;
   detail::ReportFiles files{comparison, ReportDirectory(run.options.out_dir), {}};
   ReportDirectory& dir = files.dir;
   if (!dir.created()) return dir.problems();
   dir.write("compare.csv", [&](std::ostream& o) {
-    o << scenes::csv_header() << ",ratio_to_box2d\n";
+    o << report::csv_header() << ",ratio_to_box2d\n";
     for (const scenes::SceneMetrics& m : run.rows) {
-      const std::optional<double> r = scenes::ratio_to_box2d(run, m);
-      o << scenes::csv_row(m) << ',' << (r ? fmt("%.6g", *r) : "") << '\n';
+      const std::optional<double> r = experiments::ratio_to_box2d(run, m);
+      o << report::csv_row(m) << ',' << (r ? fmt("%.6g", *r) : "") << '\n';
     }
   });
   for (const auto& snapshot : run.snapshots) {  // not a structured binding: C++17 lambdas
     dir.write("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
-              [&](std::ostream& o) { scenes::write_svg(snapshot.second, o); });
+              [&](std::ostream& o) { report::write_svg(snapshot.second, o); });
   }
   detail::draw_charts(files);
   for (const auto& s : comparison.sections) {

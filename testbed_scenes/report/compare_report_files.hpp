@@ -13,7 +13,7 @@
 
 namespace dyop::report::detail {
 
-using scenes::CompareRun;
+using experiments::CompareRun;
 using scenes::SceneMetrics;
 
 /// The report directory of one run: what is reported, where, and which charts were drawn.

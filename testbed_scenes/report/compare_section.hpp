@@ -13,14 +13,14 @@
 #include <vector>
 
 #include "report/report_directory.hpp"
-#include "scenes/compare.hpp"
+#include "experiments/compare.hpp"
 
 namespace dyop::report {
 
 /// What a section runs with: the command's options, the scenes selected (catalogue order), and
 /// where progress lines go.
 struct SectionContext {
-  const scenes::CompareOptions& options;
+  const experiments::CompareOptions& options;
   const std::vector<const scenes::SceneInfo*>& scenes;
   std::ostream& progress;
   /// Seconds since the whole run started (for the progress lines' totals).
@@ -71,7 +71,7 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections();
 
 /// `dyop compare`'s whole run: the main table and every section.
 struct Comparison {
-  scenes::CompareRun main;  ///< every scene under every backend
+  experiments::CompareRun main;  ///< every scene under every backend
   std::vector<std::unique_ptr<CompareSection>> sections;  ///< `make_compare_sections()`, run
   double seconds = 0;  ///< wall time of the whole run
 
@@ -87,6 +87,6 @@ struct Comparison {
 
 /// Runs the main table, then every section; progress lines on `progress`. Throws what the scenes
 /// throw (a refused installation).
-Comparison run_comparison(const scenes::CompareOptions& options, std::ostream& progress);
+Comparison run_comparison(const experiments::CompareOptions& options, std::ostream& progress);
 
 }  // namespace dyop::report

@@ -42,14 +42,14 @@ void Charts::image(std::ostream& o, const std::string& name, const std::string& 
   }
 }
 
-Comparison run_comparison(const scenes::CompareOptions& options, std::ostream& progress) {
+Comparison run_comparison(const experiments::CompareOptions& options, std::ostream& progress) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   Comparison c;
-  c.main = scenes::run_compare(options, progress, elapsed);
-  const std::vector<const scenes::SceneInfo*> scenes = scenes::selected_scenes(options);
+  c.main = experiments::run_compare(options, progress, elapsed);
+  const std::vector<const scenes::SceneInfo*> scenes = experiments::selected_scenes(options);
   const SectionContext context{options, scenes, progress, elapsed};
   c.sections = make_compare_sections();
   for (const auto& s : c.sections) s->run(context);

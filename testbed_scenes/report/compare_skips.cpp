@@ -1,4 +1,4 @@
-// `dyop compare`'s skip section: what skipping saves (`scenes/compare.hpp`'s skip scenes under
+// `dyop compare`'s skip section: what skipping saves (`experiments/compare.hpp`'s skip scenes under
 // its skip backends, every skip off against `--skip`, each skip alone in the target scenes),
 // with its tables, CSV, Markdown and problems.
 #include <cstdint>
@@ -7,14 +7,15 @@
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
-#include "scenes/metrics_io.hpp"
-#include "scenes/progress.hpp"
+#include "report/metrics_io.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/skips.hpp"
 
 namespace dyop::report {
 namespace {
 
 using namespace dyop::scenes;
+using namespace dyop::experiments;
 
 // Only the exact backends promise equal hashes: a difference there is flagged.
 std::string hashes_equal(const SceneMetrics& on, const SceneMetrics& off) {
@@ -34,7 +35,7 @@ std::uint64_t skipped(const SceneMetrics& m, box2d::Skip why) {
 class SkipSection : public CompareSection {
  public:
   void run(const SectionContext& c) override {
-    using scenes::detail::fixed;
+    using experiments::detail::fixed;
     quick_ = c.options.quick;
     skips_ = c.options.skips;
     const int reps = skip_repetitions(c.options.quick);

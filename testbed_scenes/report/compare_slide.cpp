@@ -1,31 +1,31 @@
 // `dyop compare`'s slide section: the `slide` scene under Box2D's own contact and the plug-in's
-// backends (`scenes/slide_run.hpp`), side by side: tables, CSV, the sliders' paths, final states.
+// backends (`experiments/slide_run.hpp`), side by side: tables, CSV, the sliders' paths, final states.
 #include <sstream>
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
-#include "scenes/progress.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/slide_run.hpp"
+#include "experiments/slide_run.hpp"
 
 namespace dyop::report {
 namespace {
 
-using scenes::SlideRun;
+using experiments::SlideRun;
 
 std::string percent(double fraction) { return fmt("%.1f", 100 * fraction) + " %"; }
 
 class SlideSection : public CompareSection {
  public:
   void run(const SectionContext& c) override {
-    using scenes::detail::fixed;
+    using experiments::detail::fixed;
     internal_edges_ = c.options.skips.internal_edges;
     for (const scenes::SceneInfo* s : c.scenes) {
       if (std::string(s->name) != "slide") continue;
       const int steps = c.steps(*s);
-      for (const scenes::Runner& r : scenes::slide_runners(c.options.quick)) {
+      for (const scenes::Runner& r : experiments::slide_runners(c.options.quick)) {
         const double start = c.elapsed();
-        runs_.push_back(scenes::run_slide(r, steps, c.options.seed, c.options.skips));
+        runs_.push_back(experiments::run_slide(r, steps, c.options.seed, c.options.skips));
         c.progress << "[slide] " << scenes::name(r) << ", " << steps << " steps, paths recorded: "
                    << fixed(c.elapsed() - start, 2) << " s (total " << fixed(c.elapsed(), 1)
                    << " s)\n"
@@ -46,7 +46,7 @@ class SlideSection : public CompareSection {
     dir.write("slide.csv", [&](std::ostream& o) { csv(o); });
     for (const SlideRun& r : runs_) {
       dir.write("slide_" + r.metrics.backend + ".svg",
-                [&](std::ostream& o) { scenes::write_svg(r.final_state, o); });
+                [&](std::ostream& o) { report::write_svg(r.final_state, o); });
     }
     paths_chart(dir, charts);
   }
@@ -146,7 +146,7 @@ class SlideSection : public CompareSection {
     double low = 0, high = 0;
     dir.write("slide_paths.dat", [&](std::ostream& o) {
       for (const SlideRun& r : runs_) {
-        for (const scenes::SliderPath& p : r.paths) {
+        for (const experiments::SliderPath& p : r.paths) {
           o << "# " << r.metrics.backend << ": " << p.body << " on " << p.ground
             << ": x height\n";
           for (std::size_t i = 0; i < p.x.size(); ++i) {

@@ -8,6 +8,7 @@
 
 namespace dyop::report {
 using namespace dyop::scenes;  // the table is about scenes throughout
+using namespace dyop::experiments;
 
 void write_compare_table(const CompareRun& run, std::ostream& out) {
   out << "| scene | backend | steps | triangle pairs | step ms (median) | narrow phase ns/pair "

@@ -5,11 +5,11 @@
 
 #include <ostream>
 
-#include "scenes/compare.hpp"
+#include "experiments/compare.hpp"
 
 namespace dyop::report {
 
 /// The main table (Markdown).
-void write_compare_table(const scenes::CompareRun& run, std::ostream& out);
+void write_compare_table(const experiments::CompareRun& run, std::ostream& out);
 
 }  // namespace dyop::report

@@ -1,5 +1,5 @@
 // `dyop compare`'s worlds-on-threads section: copies of `rain` stepped at once on 1, 2 and 4
-// threads, the plug-in against Box2D's own contact (`scenes/thread_scaling.hpp`), as in
+// threads, the plug-in against Box2D's own contact (`experiments/thread_scaling.hpp`), as in
 // `dyop bench`.
 #include "report/compare_section.hpp"
 #include "report/thread_scaling_report.hpp"
@@ -22,7 +22,7 @@ class ThreadSection : public CompareSection {
     options_.steps = c.options.quick ? kQuickSteps : kSteps;
     options_.runs = c.options.quick ? kQuickRuns : kRuns;
     options_.seed = c.options.seed;
-    records_ = scenes::run_thread_scaling(options_, c.progress);
+    records_ = experiments::run_thread_scaling(options_, c.progress);
   }
 
   bool measured() const override { return !records_.empty(); }
@@ -33,7 +33,7 @@ class ThreadSection : public CompareSection {
   }
 
   void write_files(ReportDirectory& dir, Charts&) const override {
-    dir.write("threads.csv", [&](std::ostream& o) { write_thread_scaling_csv(records_, o); });
+    dir.write("threads.csv", [&](std::ostream& o) { thread_scaling_records(records_).write_csv(o); });
   }
 
   void write_markdown(std::ostream& o, const Charts&) const override {
@@ -45,8 +45,8 @@ class ThreadSection : public CompareSection {
   }
 
  private:
-  scenes::ThreadScalingOptions options_;
-  std::vector<scenes::ThreadScalingRecord> records_;
+  experiments::ThreadScalingOptions options_;
+  std::vector<experiments::ThreadScalingRecord> records_;
 };
 
 }  // namespace

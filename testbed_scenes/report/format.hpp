@@ -17,6 +17,9 @@ inline std::string fmt(const char* format, double v) {
   return buf;
 }
 
+/// A figure in a CSV file: six significant digits, "n/a" when non-finite.
+inline std::string csv_number(double v) { return fmt("%.6g", v); }
+
 /// A length or an error in metres: "0" or three significant digits in exponent form.
 inline std::string metres(double v) { return v == 0 ? "0" : fmt("%.2e", v); }
 

@@ -2,44 +2,43 @@
 
 #include <sstream>
 
-#include "report/format.hpp"
 #include "report/gnuplot.hpp"
 
 namespace dyop::report {
 
-using scenes::ScalingRecord;
+using experiments::ScalingRecord;
 
-void write_scaling_table(const std::vector<ScalingRecord>& records, std::ostream& out) {
-  out << table_line("%-10s %7s %9s %10s %10s %10s %10s %8s %8s %8s %10s %5s\n", "backend",
-                    "falling", "triangles", "step_ms", "np_ms", "np_ns/pair", "pairs/step",
-                    "xbox2d", "np_xown", "step_xown", "pd_err_max", "fallb");
+Records scaling_records(const std::vector<ScalingRecord>& records) {
+  Records out({{"backend", "backend", "", -10},
+               {"falling", "falling", "", 7},
+               {"triangles", "triangles", "", 9},
+               {"steps", "steps", "", 6, where::files},
+               {"step_ms_median", "step ms (median)", "step_ms", 10},
+               {"narrowphase_ms_per_step", "narrow phase ms/step", "np_ms", 10},
+               {"narrowphase_ns_per_pair", "ns per pair", "np_ns/pair", 10},
+               {"pairs_per_step", "pairs per step", "pairs/step", 10},
+               {"ratio_vs_box2d", "× box2d", "xbox2d", 8},
+               {"ratio_vs_own", "narrow phase × own", "np_xown", 8},
+               {"step_ratio_vs_own", "step × own", "step_xown", 9},
+               {"pd_error_max", "depth error max (m)", "pd_err_max", 10},
+               {"fallbacks", "fallbacks", "fallb", 5},
+               {"nan_detected", "NaN", "nan", 3}});
   for (const ScalingRecord& r : records) {
-    out << table_line(
-        "%-10s %7d %9d %10.3f %10.3f %10.1f %10.0f %8.3f %8.3f %8.3f %10.2e %5llu%s\n",
-        r.backend.c_str(), r.falling, r.triangles, r.step_ms_median, r.narrowphase_ms_per_step,
-        r.narrowphase_ns_per_pair, r.pairs_per_step, r.ratio_vs_box2d, r.ratio_vs_own,
-        r.step_ratio_vs_own, r.pd_error_max, static_cast<unsigned long long>(r.fallbacks),
-        r.nan_detected ? " NaN" : "");
+    out.add({Value::text(r.backend), Value::count(r.falling), Value::count(r.triangles),
+             Value::count(r.steps), Value::number(r.step_ms_median, "%.3f"),
+             Value::number(r.narrowphase_ms_per_step, "%.3f"),
+             Value::number(r.narrowphase_ns_per_pair, "%.1f"),
+             Value::number(r.pairs_per_step, "%.0f"), Value::number(r.ratio_vs_box2d, "%.3f"),
+             Value::number(r.ratio_vs_own, "%.3f"), Value::number(r.step_ratio_vs_own, "%.3f"),
+             Value::metres(r.pd_error_max), Value::count(static_cast<std::int64_t>(r.fallbacks)),
+             Value::count(r.nan_detected ? 1 : 0)});
   }
-}
-
-void write_scaling_csv(const std::vector<ScalingRecord>& records, std::ostream& out) {
-  out << "backend,falling,triangles,steps,step_ms_median,narrowphase_ms_per_step,"
-         "narrowphase_ns_per_pair,pairs_per_step,ratio_vs_box2d,ratio_vs_own,step_ratio_vs_own,"
-         "pd_error_max,fallbacks,nan_detected\n";
-  for (const ScalingRecord& r : records) {
-    out << r.backend << ',' << r.falling << ',' << r.triangles << ',' << r.steps << ','
-        << fmt("%.6g", r.step_ms_median) << ',' << fmt("%.6g", r.narrowphase_ms_per_step) << ','
-        << fmt("%.6g", r.narrowphase_ns_per_pair) << ',' << fmt("%.6g", r.pairs_per_step) << ','
-        << fmt("%.6g", r.ratio_vs_box2d) << ',' << fmt("%.6g", r.ratio_vs_own) << ','
-        << fmt("%.6g", r.step_ratio_vs_own) << ',' << fmt("%.6g", r.pd_error_max) << ','
-        << r.fallbacks << ',' << (r.nan_detected ? 1 : 0) << '\n';
-  }
+  return out;
 }
 
 std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
                                   ReportDirectory& dir) {
-  dir.write("scaling.csv", [&](std::ostream& o) { write_scaling_csv(records, o); });
+  dir.write("scaling.csv", [&](std::ostream& o) { scaling_records(records).write_csv(o); });
   // One data block per backend (gnuplot's `index`), in the order of the records.
   std::vector<std::string> backends;
   for (const ScalingRecord& r : records) {
@@ -85,20 +84,8 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
         "through the plug-in at the same size. `× own` compares the narrow phase and the whole "
         "step (`b2World::Step`, summed over steps 2..N) with a run of Box2D's own contact, the "
         "plug-in not installed (`box2d-own`), made just before the backend's in the same "
-        "process.\n\n![rain scaling](rain_scaling.svg)\n\n"
-        "| backend | falling | triangles | step ms (median) | narrow phase ms/step | ns per pair | "
-        "pairs per step | × box2d | narrow phase × own | step × own | depth error max (m) | "
-        "fallbacks |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const ScalingRecord& r : records) {
-    md << "| " << r.backend << " | " << r.falling << " | " << r.triangles << " | "
-       << fmt("%.3f", r.step_ms_median) << " | " << fmt("%.3f", r.narrowphase_ms_per_step)
-       << " | " << fmt("%.1f", r.narrowphase_ns_per_pair) << " | "
-       << fmt("%.0f", r.pairs_per_step) << " | " << fmt("%.3f", r.ratio_vs_box2d) << " | "
-       << fmt("%.3f", r.ratio_vs_own) << " | " << fmt("%.3f", r.step_ratio_vs_own) << " | "
-       << metres(r.pd_error_max) << " | " << r.fallbacks
-       << (r.nan_detected ? " (NaN)" : "") << " |\n";
-  }
+        "process.\n\n![rain scaling](rain_scaling.svg)\n\n";
+  scaling_records(records).write_markdown(md);
   return md.str();
 }
 

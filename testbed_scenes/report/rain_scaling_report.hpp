@@ -1,27 +1,25 @@
 #pragma once
 /// \file
-/// The rain scene's scaling runs (`scenes/rain_scaling.hpp`) as `dyop bench` reports them: an
-/// aligned table, a CSV, a chart and a Markdown section.
+/// The rain scene's scaling runs (`experiments/rain_scaling.hpp`) as `dyop bench` reports them:
+/// one description of the records (aligned table, CSV, Markdown), a chart and a section.
 
-#include <ostream>
 #include <string>
 #include <vector>
 
+#include "report/records.hpp"
 #include "report/report_directory.hpp"
-#include "scenes/rain_scaling.hpp"
+#include "experiments/rain_scaling.hpp"
 
 namespace dyop::report {
 
-/// The aligned table printed by `dyop bench`.
-void write_scaling_table(const std::vector<scenes::ScalingRecord>& records, std::ostream& out);
-
-/// The CSV (header and one line per record).
-void write_scaling_csv(const std::vector<scenes::ScalingRecord>& records, std::ostream& out);
+/// The records, column by column (the aligned table printed by `dyop bench`, the CSV, the
+/// Markdown table).
+Records scaling_records(const std::vector<experiments::ScalingRecord>& records);
 
 /// Writes `scaling.csv` and the chart `rain_scaling.svg` in `dir` (gnuplot, log–log: narrow-phase
 /// and step time per step against falling triangles, one line per backend) and returns the
 /// report's Markdown section (table and chart). Problems go to `dir.problems()`.
-std::string write_scaling_outputs(const std::vector<scenes::ScalingRecord>& records,
+std::string write_scaling_outputs(const std::vector<experiments::ScalingRecord>& records,
                                   ReportDirectory& dir);
 
 }  // namespace dyop::report

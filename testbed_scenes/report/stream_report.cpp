@@ -3,64 +3,78 @@
 #include <ostream>
 #include <sstream>
 
-#include "report/format.hpp"
 #include "report/gnuplot.hpp"
 
 namespace dyop::report {
 namespace {
 
-using scenes::StreamResult;
-using scenes::StreamRunnerResult;
+using experiments::StreamResult;
+using experiments::StreamRunnerResult;
 
 double share(std::uint64_t part, std::uint64_t whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0;
 }
 
 // Face agreement is only defined where both manifolds have points; no such call: nothing to miss.
-double face_share(const scenes::StreamAgreement& a) {
+double face_share(const experiments::StreamAgreement& a) {
   return a.both_points > 0 ? share(a.same_face, a.both_points) : 1;
 }
 
 }  // namespace
 
-void write_stream_table(const std::vector<StreamResult>& results, std::ostream& out) {
-  out << table_line("%-13s %-10s %8s %6s %6s %6s %8s %7s %8s %8s %9s %9s\n", "scene", "runner",
-                    "calls", "world%", "tri%", "pts%", "ns/call", "xb2own", "count!=", "face!=",
-                    "normal", "sep_m");
+Records stream_records(const std::vector<StreamResult>& results) {
+  const unsigned files = where::files;
+  const unsigned shown = where::table | where::markdown;
+  Records out({{"scene", "scene", "", -13},
+               {"steps", "steps", "", 6, files},
+               {"contacts", "contacts", "", 8, files},
+               {"calls", "calls", "", 8},
+               {"world_evaluations", "world evaluations", "", 8, files},
+               {"world_share", "of the world's", "world%", 6, shown},
+               {"triangle_calls", "triangle calls", "", 8, files},
+               {"triangle_share", "triangle pairs", "tri%", 6, shown},
+               {"calls_with_points", "calls with points", "", 8, files},
+               {"points_share", "with points", "pts%", 6, shown},
+               {"runner", "runner", "", -10},
+               {"ns_per_call", "ns/call", "", 8},
+               {"ratio_vs_box2d_own", "× box2d-own", "xb2own", 7},
+               {"same_point_count", "same count", "", 8, files},
+               {"point_count_differs", "count differs", "count!=", 8, shown},
+               {"both_points", "both with points", "", 8, files},
+               {"same_face", "same face", "", 8, files},
+               {"face_differs", "face differs", "face!=", 8, shown},
+               {"same_face_share", "same face (of both with points)", "", 8, where::markdown},
+               {"normal_angle_max_rad", "normal max (rad)", "normal", 9},
+               {"separation_diff_max_m", "separation max (m)", "sep_m", 9}});
   for (const StreamResult& r : results) {
     for (const StreamRunnerResult& x : r.runners) {
-      const scenes::StreamAgreement& a = x.agreement;
-      out << table_line(
-          "%-13s %-10s %8llu %6.1f %6.1f %6.1f %8.1f %7.3f %8llu %8llu %9.2e %9.2e\n",
-          r.scene.c_str(), x.runner.c_str(), static_cast<unsigned long long>(r.calls),
-          100 * share(r.calls, r.world_evaluations), 100 * share(r.triangle_calls, r.calls),
-          100 * share(r.calls_with_points, r.calls), x.ns_per_call, x.ratio_vs_box2d_own,
-          static_cast<unsigned long long>(a.calls - a.same_point_count),
-          static_cast<unsigned long long>(a.both_points - a.same_face), a.normal_angle_max,
-          a.separation_diff_max);
+      const experiments::StreamAgreement& a = x.agreement;
+      auto percent = [](double v) { return Value::number(100 * v, "%.1f"); };
+      out.add({Value::text(r.scene), Value::count(r.steps),
+               Value::count(static_cast<std::int64_t>(r.contacts)),
+               Value::count(static_cast<std::int64_t>(r.calls)),
+               Value::count(static_cast<std::int64_t>(r.world_evaluations)),
+               percent(share(r.calls, r.world_evaluations)),
+               Value::count(static_cast<std::int64_t>(r.triangle_calls)),
+               percent(share(r.triangle_calls, r.calls)),
+               Value::count(static_cast<std::int64_t>(r.calls_with_points)),
+               percent(share(r.calls_with_points, r.calls)), Value::text(x.runner),
+               Value::number(x.ns_per_call, "%.1f"), Value::number(x.ratio_vs_box2d_own, "%.3f"),
+               Value::count(static_cast<std::int64_t>(a.same_point_count)),
+               Value::count(static_cast<std::int64_t>(a.calls - a.same_point_count)),
+               Value::count(static_cast<std::int64_t>(a.both_points)),
+               Value::count(static_cast<std::int64_t>(a.same_face)),
+               Value::count(static_cast<std::int64_t>(a.both_points - a.same_face)),
+               Value::number(100 * face_share(a), "%.3f%%"),
+               Value::number(a.normal_angle_max, "%.2e"), Value::metres(a.separation_diff_max)});
     }
   }
-}
-
-void write_stream_csv(const std::vector<StreamResult>& results, std::ostream& out) {
-  out << "scene,steps,contacts,calls,world_evaluations,triangle_calls,calls_with_points,runner,ns_per_call,"
-         "ratio_vs_box2d_own,same_point_count,both_points,same_face,normal_angle_max_rad,"
-         "separation_diff_max_m\n";
-  for (const StreamResult& r : results) {
-    for (const StreamRunnerResult& x : r.runners) {
-      const scenes::StreamAgreement& a = x.agreement;
-      out << r.scene << ',' << r.steps << ',' << r.contacts << ',' << r.calls << ','
-          << r.world_evaluations << ',' << r.triangle_calls << ',' << r.calls_with_points << ',' << x.runner << ','
-          << fmt("%.6g", x.ns_per_call) << ',' << fmt("%.6g", x.ratio_vs_box2d_own) << ','
-          << a.same_point_count << ',' << a.both_points << ',' << a.same_face << ','
-          << fmt("%.6g", a.normal_angle_max) << ',' << fmt("%.6g", a.separation_diff_max) << '\n';
-    }
-  }
+  return out;
 }
 
 std::string write_stream_outputs(const std::vector<StreamResult>& results,
                                  ReportDirectory& dir) {
-  dir.write("streams.csv", [&](std::ostream& o) { write_stream_csv(results, o); });
+  dir.write("streams.csv", [&](std::ostream& o) { stream_records(results).write_csv(o); });
   // One row per scene, one column per plug-in backend (box2d-own is 1 by definition).
   const std::size_t backends = results.empty() ? 0 : results.front().runners.size() - 1;
   dir.write("streams.dat", [&](std::ostream& o) {
@@ -100,24 +114,8 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results,
         "same run. Agreement with `b2CollidePolygons`, call by call: same point count; same "
         "reference face among calls where both have points; largest world-normal angle (rad) and "
         "deepest-separation difference (m) among those calls.\n\n"
-        "![contact streams](streams.svg)\n\n"
-        "| scene | runner | calls | of the world's | triangle pairs | with points | ns/call | "
-        "× box2d-own | same count | same face | normal max (rad) | separation max (m) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const StreamResult& r : results) {
-    for (const StreamRunnerResult& x : r.runners) {
-      const scenes::StreamAgreement& a = x.agreement;
-      md << "| " << r.scene << " | " << x.runner << " | " << r.calls << " | "
-         << fmt("%.1f%%", 100 * share(r.calls, r.world_evaluations)) << " | "
-         << fmt("%.1f%%", 100 * share(r.triangle_calls, r.calls)) << " | "
-         << fmt("%.1f%%", 100 * share(r.calls_with_points, r.calls)) << " | "
-         << fmt("%.1f", x.ns_per_call) << " | " << fmt("%.3f", x.ratio_vs_box2d_own) << " | "
-         << fmt("%.3f%%", 100 * share(a.same_point_count, a.calls)) << " ("
-         << a.calls - a.same_point_count << " differ) | " << fmt("%.3f%%", 100 * face_share(a))
-         << " (" << a.both_points - a.same_face << " differ) | " << fmt("%.2e", a.normal_angle_max)
-         << " | " << metres(a.separation_diff_max) << " |\n";
-    }
-  }
+        "![contact streams](streams.svg)\n\n";
+  stream_records(results).write_markdown(md);
   return md.str();
 }
 

@@ -2,36 +2,37 @@
 
 #include <sstream>
 
-#include "report/format.hpp"
 #include "report/machine.hpp"
 
 namespace dyop::report {
 
-using scenes::ThreadScalingRecord;
+using experiments::ThreadScalingRecord;
+
+Records thread_scaling_records(const std::vector<ThreadScalingRecord>& records) {
+  Records out({{"runner", "runner", "", -10},
+               {"threads", "threads", "", 7},
+               {"steps", "steps", "", 6, where::table | where::files},
+               {"seconds", "seconds", "", 10},
+               {"steps_per_second", "steps per second", "steps/s", 12},
+               {"ratio_vs_own", "× own", "x_own", 8}});
+  for (const ThreadScalingRecord& r : records) {
+    out.add({Value::text(r.runner), Value::count(r.threads), Value::count(r.steps),
+             Value::number(r.seconds, "%.3f"), Value::number(r.steps_per_second, "%.0f"),
+             Value::number(r.ratio_vs_own, "%.3f")});
+  }
+  return out;
+}
 
 void write_thread_scaling_table(const std::vector<ThreadScalingRecord>& records,
                                 const std::string& scene, std::ostream& out) {
   out << "Worlds of '" << scene << "' on as many threads (" << machine_description() << "):\n";
-  out << table_line("%-10s %7s %6s %10s %12s %8s\n", "runner", "threads", "steps", "seconds",
-                    "steps/s", "x_own");
-  for (const ThreadScalingRecord& r : records) {
-    out << table_line("%-10s %7d %6d %10.3f %12.0f %8.3f\n", r.runner.c_str(), r.threads,
-                      r.steps, r.seconds, r.steps_per_second, r.ratio_vs_own);
-  }
-}
-
-void write_thread_scaling_csv(const std::vector<ThreadScalingRecord>& records,
-                              std::ostream& out) {
-  out << "runner,threads,steps,seconds,steps_per_second,ratio_vs_own\n";
-  for (const ThreadScalingRecord& r : records) {
-    out << r.runner << ',' << r.threads << ',' << r.steps << ',' << fmt("%.6g", r.seconds) << ','
-        << fmt("%.6g", r.steps_per_second) << ',' << fmt("%.6g", r.ratio_vs_own) << '\n';
-  }
+  thread_scaling_records(records).write_table(out);
 }
 
 std::string write_thread_scaling_outputs(const std::vector<ThreadScalingRecord>& records,
                                          const std::string& scene, ReportDirectory& dir) {
-  dir.write("threads.csv", [&](std::ostream& o) { write_thread_scaling_csv(records, o); });
+  dir.write("threads.csv",
+            [&](std::ostream& o) { thread_scaling_records(records).write_csv(o); });
   return thread_scaling_markdown(records, scene);
 }
 
@@ -43,13 +44,8 @@ std::string thread_scaling_markdown(const std::vector<ThreadScalingRecord>& reco
      << " steps each, the plug-in's `dyop` installed against Box2D's own contact (the plug-in not "
         "installed), runs alternating in one process; the fastest run of each is kept. Steps per "
         "second count the steps of all worlds. Measured on "
-     << machine_description()
-     << ": more threads than cores share them.\n\n"
-        "| runner | threads | seconds | steps per second | × own |\n|---|---|---|---|---|\n";
-  for (const ThreadScalingRecord& r : records) {
-    md << "| " << r.runner << " | " << r.threads << " | " << fmt("%.3f", r.seconds) << " | "
-       << fmt("%.0f", r.steps_per_second) << " | " << fmt("%.3f", r.ratio_vs_own) << " |\n";
-  }
+     << machine_description() << ": more threads than cores share them.\n\n";
+  thread_scaling_records(records).write_markdown(md);
   return md.str();
 }
 

@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "dyop/sat.hpp"
-#include "measure/pair_function.hpp"
+#include "adapters/pair_function.hpp"
 #include "scenes/world.hpp"
 
 namespace dyop::scenes {
@@ -75,7 +75,7 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     ++u.triangles;
 
     Cache& cache = caches_[{fa, fb}];
-    if (cache.seen + 1 != pass_) cache.cache = LinCannyCache{};  // a new contact starts cold
+    if (cache.seen + 1 != pass_) cache.cache = PairState{};  // a new contact starts cold
     cache.seen = pass_;
 
     // The plug-in's inputs: A as stored, B moved into A's body frame, in float.
@@ -94,7 +94,7 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     }
     // The backend's depth, in float as the plug-in computes it (Lin–Canny warm-started from the
     // pair's cache; Box2D: the deepest point of its manifold).
-    const Result<float> r = measure::pair_function<float>(backend_)(
+    const Result<float> r = adapters::pair_function<float>(backend_)(
         ta.triangle, tb.triangle, Query<float>{Level::Depth}, &cache.cache);
     auto widen = [](const Triangle<float>& t) {
       return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),

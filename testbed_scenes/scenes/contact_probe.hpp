@@ -76,7 +76,7 @@ class ContactProbe {
     std::size_t operator()(const std::pair<const b2Fixture*, const b2Fixture*>& p) const;
   };
   struct Cache {
-    LinCannyCache cache;
+    PairState cache;
     std::uint64_t seen = 0;  ///< the last pass that met the pair's contact
   };
 

@@ -16,8 +16,8 @@ int pair_index(int i, int j) {
   return i * (2 * type_count - i - 1) / 2 + (j - i - 1);
 }
 
-double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<LinCannyCache>& caches,
-                 const std::vector<LinCannyCache>& start) {
+double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<PairState>& caches,
+                 const std::vector<PairState>& start) {
   caches = start;
   double sink = 0;
   const auto t0 = std::chrono::steady_clock::now();

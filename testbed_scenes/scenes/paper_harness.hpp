@@ -20,7 +20,7 @@ struct PairCall {
   PairFunction<float> run = nullptr;
   bool warm = false;
   Result<float> operator()(const Triangle<float>& a, const Triangle<float>& b,
-                           LinCannyCache* cache) const {
+                           PairState* cache) const {
     return run(a, b, depth_query, warm ? cache : nullptr);
   }
 };
@@ -39,8 +39,8 @@ struct Job {
 };
 
 /// Wall time of `jobs` through `call` in microseconds; `caches` (one per pair) start from `start`.
-double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<LinCannyCache>& caches,
-                 const std::vector<LinCannyCache>& start);
+double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<PairState>& caches,
+                 const std::vector<PairState>& start);
 
 /// The exact signed separation of a pair, on the float vertices the methods were given.
 workloads::ExactAnswer exact_of(const Triangle<float>& a, const Triangle<float>& b);

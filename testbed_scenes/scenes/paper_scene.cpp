@@ -24,9 +24,9 @@ class PaperScene : public Scene {
       jobs.push_back({&f.triangles[i], &f.triangles[j], pair_index(i, j)});
     }
     // Timed once, first: repeating a step's few pairs would let the branch predictor learn them.
-    const std::vector<LinCannyCache> start = caches_;
+    const std::vector<PairState> start = caches_;
     step_us_.push_back(time_jobs(jobs, call_, caches_, start));
-    std::vector<LinCannyCache> replay = start;
+    std::vector<PairState> replay = start;
     for (const Job& j : jobs) {  // untimed, from the same caches: the answers the timing got
       const Result<float> r = call_(*j.a, *j.b, &replay[j.pair]);
       const workloads::ExactAnswer x = exact_of(*j.a, *j.b);
@@ -98,7 +98,7 @@ class PaperScene : public Scene {
   box2d::Backend backend_;
   std::uint64_t seed_;
   PairCall call_;
-  std::vector<LinCannyCache> caches_;
+  std::vector<PairState> caches_;
   int steps_ = 0;
   std::uint64_t pairs_ = 0;
   std::vector<double> step_us_;

@@ -21,7 +21,7 @@
 #include "dyop/box2d.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/skips.hpp"
-#include "scenes/svg.hpp"
+#include "scenes/drawing.hpp"
 
 namespace dyop::scenes {
 

@@ -16,6 +16,8 @@
 namespace dyop::scenes {
 namespace {
 
+using namespace experiments;  // the experiments these tests run over the scenes
+
 std::string read(const std::filesystem::path& p) {
   std::ifstream in(p);
   return std::string(std::istreambuf_iterator<char>(in), {});

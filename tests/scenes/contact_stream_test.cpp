@@ -11,11 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "scenes/contact_stream.hpp"
+#include "experiments/contact_stream.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace experiments;  // the experiments these tests run over the scenes
 
 using box2d::Backend;
 

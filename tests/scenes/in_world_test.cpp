@@ -9,12 +9,14 @@
 
 #include "dyop/box2d.hpp"
 #include "report/compare_in_world.hpp"
-#include "scenes/compare.hpp"
-#include "scenes/in_world.hpp"
+#include "experiments/compare.hpp"
+#include "experiments/in_world.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace experiments;  // the experiments these tests run over the scenes
 
 TEST(OwnContact, GivesTheWorldOfBox2DsCodeThroughThePlugIn) {
   // `box2d` answers with b2CollidePolygons through the plug-in, bit for bit Box2D's own contact.
@@ -81,8 +83,8 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
     EXPECT_GT(r.plugin.step_ms, 0);
   }
   std::ostringstream table, csv;
-  report::write_in_world_table(rows, table);
-  report::write_in_world_csv(rows, csv);
+  report::in_world_records(rows).write_markdown(table);
+  report::in_world_records(rows).write_csv(csv);
   EXPECT_NE(table.str().find("| mixed | dyop |"), std::string::npos) << table.str();
   const std::string text = csv.str();
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),

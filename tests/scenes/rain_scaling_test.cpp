@@ -17,6 +17,8 @@
 namespace dyop::scenes {
 namespace {
 
+using namespace experiments;  // the experiments these tests run over the scenes
+
 constexpr int kSteps = 20;
 
 SceneMetrics run_rain(int falling, box2d::Backend backend) {

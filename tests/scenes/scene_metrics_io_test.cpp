@@ -8,11 +8,13 @@
 #include <sstream>
 #include <string>
 
-#include "scenes/metrics_io.hpp"
+#include "report/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace report;  // the metrics as the report writes them
 
 nlohmann::json json_of(const SceneMetrics& m) {
   std::ostringstream out;

@@ -10,11 +10,13 @@
 #include <tuple>
 #include <vector>
 
-#include "scenes/metrics_io.hpp"
+#include "report/metrics_io.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace report;  // the metrics as the report writes them
 
 using box2d::Backend;
 using box2d::Config;

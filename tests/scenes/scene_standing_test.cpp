@@ -3,11 +3,13 @@
 
 #include <string>
 
-#include "scenes/compare.hpp"
+#include "experiments/compare.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace experiments;  // the experiments these tests run over the scenes
 
 constexpr int kSteps = 600;  // 10 s
 

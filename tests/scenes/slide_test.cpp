@@ -11,12 +11,14 @@
 #include <sstream>
 #include <string>
 
-#include "scenes/metrics_io.hpp"
+#include "report/metrics_io.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/slide_run.hpp"
+#include "experiments/slide_run.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace experiments;  // the experiments these tests run over the scenes
 
 // The bounds for a glide: largest vertical speed (m/s) and smallest travel fraction.
 constexpr double kGlideVerticalSpeed = 0.05;
@@ -73,13 +75,13 @@ TEST_P(EveryRunner, SlideFiguresArePresentAndFinite) {
   EXPECT_EQ(m.slide->max_vertical_speed, largest);
 
   std::ostringstream out;
-  write_json(m, out);
+  report::write_json(m, out);
   const nlohmann::json j = nlohmann::json::parse(out.str());
   ASSERT_TRUE(j["slide"].is_object());
   EXPECT_EQ(j["slide"]["sliders"].size(), 8u);
   EXPECT_TRUE(j["slide"]["min_travel"].is_number());
-  const std::string row = csv_row(m);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), static_cast<long>(csv_columns().size()) - 1)
+  const std::string row = report::csv_row(m);
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','), static_cast<long>(report::csv_columns().size()) - 1)
       << "the per-slider list has no CSV column";
 }
 
@@ -91,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(Slide, EveryRunner,
 TEST(Slide, OtherScenesHaveNoSlideFigures) {
   EXPECT_FALSE(run_scene("stack", box2d::Backend::Dyop, 3, 0).slide.has_value());
   std::ostringstream out;
-  write_json(run_scene("mixed", box2d::Backend::Dyop, 3, 0), out);
+  report::write_json(run_scene("mixed", box2d::Backend::Dyop, 3, 0), out);
   EXPECT_TRUE(nlohmann::json::parse(out.str())["slide"].is_null());
 }
 

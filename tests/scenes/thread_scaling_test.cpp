@@ -10,10 +10,12 @@
 #include "dyop/box2d.hpp"
 #include "report/thread_scaling_report.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/thread_scaling.hpp"
+#include "experiments/thread_scaling.hpp"
 
 namespace dyop::scenes {
 namespace {
+
+using namespace experiments;  // the experiments these tests run over the scenes
 
 ThreadScalingOptions tiny() {
   ThreadScalingOptions o;
@@ -42,7 +44,7 @@ TEST(ThreadScaling, GivesOneFinitePositiveRecordPerRunnerAndThreadCount) {
   EXPECT_NE(progress.str().find("2 pyramid worlds"), std::string::npos) << progress.str();
 
   std::ostringstream csv;
-  report::write_thread_scaling_csv(records, csv);
+  report::thread_scaling_records(records).write_csv(csv);
   std::istringstream lines(csv.str());
   std::string line;
   int count = 0;

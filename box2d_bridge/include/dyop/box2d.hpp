@@ -49,7 +49,6 @@
 #include <cstdint>
 #include <optional>
 
-#include "dyop/lin_canny.hpp"
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
 #include "dyop/triangle.hpp"
@@ -184,7 +183,8 @@ struct ContactMemory {
     InvalidTriangles,  ///< two triangles, one rejected by `Triangle<float>::make`: Box2D answers
     Polygons,          ///< a side with more than 3 vertices: `b2CollidePolygons` answers
   };
-  LinCannyCache lin_canny;  ///< `LinCanny`'s last features (`Config::lin_canny_cache`)
+  /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
+  PairState warm_start;
   /// The face the last evaluation judged the pair on: 0..2 A's edges, 3..5 B's, -1 none yet
   /// (`Config::warm_axis`).
   std::int8_t last_face = -1;

@@ -22,6 +22,7 @@
 #include "dyop/dyop_paper.hpp"
 #include "dyop/epa.hpp"
 #include "dyop/lin_canny.hpp"
+#include "dyop/pair_state.hpp"
 #include "dyop/result.hpp"
 #include "dyop/sat.hpp"
 #include "dyop/triangle.hpp"
@@ -65,11 +66,11 @@ enum class Accuracy : std::uint8_t {
   Approximate,  ///< a heuristic: can misclassify pairs and misjudge depths (`dyop-fast`, paper)
 };
 
-/// A per-pair entry point: `cache` is the warm-start state of methods that keep one (nullptr:
-/// cold start) and is ignored by the others.
+/// A per-pair entry point: `state` is the pair's warm-start state (`dyop/pair_state.hpp`;
+/// nullptr: cold start), used by the methods that keep one and ignored by the others.
 template <class T>
 using PairFunction = Result<T> (*)(const Triangle<T>&, const Triangle<T>&, const Query<T>&,
-                                   LinCannyCache*);
+                                   PairState* state);
 
 /// The bit of `level` in `MethodInfo::levels`.
 constexpr std::uint8_t level_bit(Level level) {
@@ -111,7 +112,7 @@ struct MethodInfo {
 
   /// Has a double-precision version (Box2D runs in float only).
   constexpr bool runs_double() const { return (traits & trait::runs_double) != 0; }
-  /// Keeps state between queries of the same pair (`LinCannyCache`).
+  /// Keeps state between queries of the same pair (in its `PairState`).
   constexpr bool warm_start() const { return (traits & trait::warm_start) != 0; }
   /// Offered by the Box2D plug-in as a backend for triangle pairs.
   constexpr bool box2d_backend() const { return (traits & trait::box2d_backend) != 0; }
@@ -144,8 +145,15 @@ namespace detail {
 // The per-pair entry point of a method that keeps no state between queries.
 template <class T, Result<T> (*F)(const Triangle<T>&, const Triangle<T>&, const Query<T>&)>
 Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
-                    LinCannyCache*) {
+                    PairState*) {
   return F(a, b, query);
+}
+
+// Lin–Canny's entry point: its part of the pair's state.
+template <class T>
+Result<T> lin_canny_warm(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
+                         PairState* state) {
+  return lin_canny(a, b, query, state != nullptr ? &state->lin_canny : nullptr);
 }
 
 }  // namespace detail
@@ -168,7 +176,7 @@ inline constexpr MethodInfo method_table[method_count] = {
     {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
      "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
      Entry::PerPair, all_level_bits, trait::runs_double | trait::warm_start | trait::box2d_backend,
-     Accuracy::LocalDepth, &lin_canny<float>, &lin_canny<double>},
+     Accuracy::LocalDepth, &detail::lin_canny_warm<float>, &detail::lin_canny_warm<double>},
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
      Entry::PerPair, all_level_bits,
@@ -281,17 +289,17 @@ inline constexpr auto is_per_pair = [](const MethodInfo& row) {
 inline constexpr auto pair_methods =
     detail::select_methods<detail::count_methods(detail::is_per_pair)>(detail::is_per_pair);
 
-/// Runs method `m` on one pair. `cache` is used by the methods that keep warm-start state
-/// (`info(m).warm_start()`; nullptr: cold start). `m` must be one of `pair_methods`; the others
+/// Runs method `m` on one pair. `state` is the pair's warm-start state, used by the methods that
+/// keep one (`info(m).warm_start()`; nullptr: cold start). `m` must be one of `pair_methods`; the others
 /// (`Batch`, `Box2D`) answer `Invalid` here.
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,
-                    const Query<T>& query = {}, LinCannyCache* cache = nullptr);
+                    const Query<T>& query = {}, PairState* state = nullptr);
 
 extern template Result<float> penetrate(Method, const Triangle<float>&, const Triangle<float>&,
-                                        const Query<float>&, LinCannyCache*);
+                                        const Query<float>&, PairState*);
 extern template Result<double> penetrate(Method, const Triangle<double>&,
                                          const Triangle<double>&, const Query<double>&,
-                                         LinCannyCache*);
+                                         PairState*);
 
 }  // namespace dyop

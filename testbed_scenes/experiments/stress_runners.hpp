@@ -11,7 +11,7 @@
 #include "dyop/result.hpp"
 #include "workloads/raw_pair.hpp"
 
-namespace dyop::measure {
+namespace dyop::experiments {
 
 /// Whether `m` runs in this precision in this build: Box2D in float only, and only when built
 /// with Box2D; every other row in both.
@@ -44,4 +44,4 @@ extern template std::vector<StressAnswer> stress_answers<float>(
 extern template std::vector<StressAnswer> stress_answers<double>(
     Method, const std::vector<workloads::RawPair>&, bool);
 
-}  // namespace dyop::measure
+}  // namespace dyop::experiments

@@ -1,12 +1,12 @@
-#include "scenes/compare.hpp"
+#include "experiments/compare.hpp"
 
 #include <algorithm>
 #include <ostream>
 
-#include "scenes/progress.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 namespace {
 
 using detail::fixed;
@@ -20,21 +20,21 @@ bool listed(const std::array<const char*, N>& names, const std::string& name) {
 
 // The configurations one after the other, repetition after repetition: the machines are shared,
 // so what is compared is measured as close together in time as possible.
-SkipMeasurement measure_skips(const SceneInfo& s, box2d::Backend b, int steps,
+SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int steps,
                               const CompareOptions& options) {
   std::vector<box2d::Config> configs = {box2d::Config::none(), options.skips};
   if (is_skip_target(s.name, box2d::name(b))) {
-    for (const SkipSwitch& sw : skip_switches()) {
+    for (const scenes::SkipSwitch& sw : scenes::skip_switches()) {
       if (sw.field == &box2d::Config::lin_canny_cache) continue;
       box2d::Config alone = box2d::Config::none();
       alone.*(sw.field) = true;
       configs.push_back(alone);
     }
   }
-  std::vector<std::optional<SceneMetrics>> fastest(configs.size());
+  std::vector<std::optional<scenes::SceneMetrics>> fastest(configs.size());
   for (int r = 0; r < skip_repetitions(options.quick); ++r) {
     for (std::size_t i = 0; i < configs.size(); ++i) {
-      SceneMetrics run = run_scene(s.name, b, steps, options.seed, configs[i]);
+      scenes::SceneMetrics run = scenes::run_scene(s.name, b, steps, options.seed, configs[i]);
       if (!fastest[i] || run.narrowphase_ms_total < fastest[i]->narrowphase_ms_total) {
         fastest[i] = std::move(run);
       }
@@ -56,7 +56,7 @@ bool skips_keep_the_answer(const std::string& backend) {
          backend != box2d::name(box2d::Backend::DyopFast);
 }
 
-double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off) {
+double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetrics& off) {
   return on.narrowphase_ns_per_pair / off.narrowphase_ns_per_pair;
 }
 
@@ -68,9 +68,9 @@ std::vector<box2d::Backend> in_world_backends(bool quick) {
           box2d::Backend::Box2D};
 }
 
-std::vector<const SceneInfo*> selected_scenes(const CompareOptions& options) {
-  std::vector<const SceneInfo*> scenes;
-  for (const SceneInfo& s : scene_catalog()) {
+std::vector<const scenes::SceneInfo*> selected_scenes(const CompareOptions& options) {
+  std::vector<const scenes::SceneInfo*> scenes;
+  for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
     if (options.scenes.empty() ||
         std::find(options.scenes.begin(), options.scenes.end(), s.name) != options.scenes.end()) {
       scenes.push_back(&s);
@@ -83,16 +83,16 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
                        const std::function<double()>& elapsed) {
   CompareRun run;
   run.options = options;
-  const std::vector<const SceneInfo*> scenes = selected_scenes(options);
+  const std::vector<const scenes::SceneInfo*> scenes = selected_scenes(options);
   const int total = static_cast<int>(scenes.size()) * box2d::backend_count;
   int done = 0;
-  for (const SceneInfo* s : scenes) {
+  for (const scenes::SceneInfo* s : scenes) {
     const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
     for (box2d::Backend b : box2d::all_backends) {
       const double start = elapsed();
-      Drawing final_state;
+      scenes::Drawing final_state;
       const bool snapshot = b == box2d::Backend::Dyop;
-      run.rows.push_back(run_scene(s->name, b, steps, options.seed, options.skips,
+      run.rows.push_back(scenes::run_scene(s->name, b, steps, options.seed, options.skips,
                                    snapshot ? &final_state : nullptr));
       if (snapshot) run.snapshots.emplace_back(s->name, std::move(final_state));
       ++done;
@@ -105,8 +105,8 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
   return run;
 }
 
-std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& m) {
-  for (const SceneMetrics& r : run.rows) {
+std::optional<double> ratio_to_box2d(const CompareRun& run, const scenes::SceneMetrics& m) {
+  for (const scenes::SceneMetrics& r : run.rows) {
     if (r.scene == m.scene && r.backend == "box2d" && r.narrowphase_ns_per_pair > 0) {
       return m.narrowphase_ns_per_pair / r.narrowphase_ns_per_pair;
     }
@@ -114,4 +114,4 @@ std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& 
   return std::nullopt;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

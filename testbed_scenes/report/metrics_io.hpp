@@ -24,7 +24,7 @@
 
 #include "scenes/metrics.hpp"
 
-namespace dyop::scenes {
+namespace dyop::report {
 
 /// The JSON object's keys, in the order written.
 const std::vector<std::string>& metrics_keys();
@@ -34,15 +34,15 @@ const std::vector<std::string>& metrics_keys();
 const std::vector<std::string>& csv_columns();
 
 /// One JSON object, indented, with a final newline.
-void write_json(const SceneMetrics& m, std::ostream& out);
+void write_json(const scenes::SceneMetrics& m, std::ostream& out);
 
 /// The CSV header: `csv_columns` joined by commas.
 std::string csv_header();
 
 /// One CSV line (no newline) in `csv_header` order; numbers with 9 significant digits.
-std::string csv_row(const SceneMetrics& m);
+std::string csv_row(const scenes::SceneMetrics& m);
 
 /// The hash as written: 16 lower-case hexadecimal digits.
 std::string hash_hex(std::uint64_t hash);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::report

@@ -35,7 +35,7 @@
 #include "dyop/box2d.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 /// One contact of a stream: the two shapes exactly as Box2D held them (`m_count`, `m_vertices`,
 /// `m_normals`, `m_centroid`, `m_radius`, body frames, metres). A fixture's shape never changes,
@@ -158,4 +158,4 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
 /// `record_stream` and `measure_stream`.
 std::vector<StreamResult> run_streams(const StreamOptions& options, std::ostream& progress);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -1,27 +1,27 @@
-#include "scenes/metrics_io.hpp"
+#include "report/metrics_io.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 #include <sstream>
 #include <type_traits>
 
+#include "report/json.hpp"
 #include "scenes/skips.hpp"
 
-namespace dyop::scenes {
+namespace dyop::report {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+using scenes::SceneMetrics;
+using scenes::SlideFigures;
+using scenes::SliderFigures;
 
 template <class T>
 Json optional(const std::optional<T>& v) {
   if (!v) return Json(nullptr);
   if constexpr (std::is_floating_point_v<T>) {
-    return number(*v);
+    return json_number(*v);
   } else {
     return Json(*v);
   }
@@ -30,7 +30,7 @@ Json optional(const std::optional<T>& v) {
 Json skip_config(const std::optional<box2d::Config>& config) {
   if (!config) return Json(nullptr);
   Json names = Json::array();
-  for (const std::string& n : skip_names(*config)) names.push_back(n);
+  for (const std::string& n : scenes::skip_names(*config)) names.push_back(n);
   return names;
 }
 
@@ -45,18 +45,18 @@ Json skips(const std::optional<std::array<std::uint64_t, box2d::skip_count>>& co
 Json slide(const std::optional<SlideFigures>& f) {
   if (!f) return Json(nullptr);
   Json j;
-  j["max_vertical_speed"] = number(f->max_vertical_speed);
-  j["max_angular_speed"] = number(f->max_angular_speed);
-  j["min_travel"] = number(f->min_travel);
+  j["max_vertical_speed"] = json_number(f->max_vertical_speed);
+  j["max_angular_speed"] = json_number(f->max_angular_speed);
+  j["min_travel"] = json_number(f->min_travel);
   Json sliders = Json::array();
   for (const SliderFigures& s : f->sliders) {
     Json one;
     one["body"] = s.body;
     one["ground"] = s.ground;
     one["rolling"] = s.rolling;
-    one["max_vertical_speed"] = number(s.max_vertical_speed);
-    one["max_angular_speed"] = number(s.max_angular_speed);
-    one["travel"] = number(s.travel);
+    one["max_vertical_speed"] = json_number(s.max_vertical_speed);
+    one["max_angular_speed"] = json_number(s.max_angular_speed);
+    one["travel"] = json_number(s.travel);
     sliders.push_back(one);
   }
   j["sliders"] = sliders;
@@ -83,17 +83,17 @@ Json to_json(const SceneMetrics& m) {
   j["fallbacks"] = optional(m.fallbacks);
   j["skip_config"] = skip_config(m.skip_config);
   j["skips"] = skips(m.skips);
-  j["step_ms_median"] = number(m.step_ms_median);
-  j["step_ms_total"] = number(m.step_ms_total);
-  j["narrowphase_ms_total"] = number(m.narrowphase_ms_total);
-  j["narrowphase_ns_per_pair"] = number(m.narrowphase_ns_per_pair);
-  j["max_penetration"] = number(m.max_penetration);
-  j["mean_penetration"] = number(m.mean_penetration);
-  j["pd_error_max"] = number(m.pd_error_max);
-  j["pd_error_mean"] = number(m.pd_error_mean);
+  j["step_ms_median"] = json_number(m.step_ms_median);
+  j["step_ms_total"] = json_number(m.step_ms_total);
+  j["narrowphase_ms_total"] = json_number(m.narrowphase_ms_total);
+  j["narrowphase_ns_per_pair"] = json_number(m.narrowphase_ns_per_pair);
+  j["max_penetration"] = json_number(m.max_penetration);
+  j["mean_penetration"] = json_number(m.mean_penetration);
+  j["pd_error_max"] = json_number(m.pd_error_max);
+  j["pd_error_mean"] = json_number(m.pd_error_mean);
   j["misclassified"] = m.misclassified;
   j["invalid"] = m.invalid;
-  j["kinetic_energy_final"] = number(m.kinetic_energy_final);
+  j["kinetic_energy_final"] = json_number(m.kinetic_energy_final);
   j["top_displacement"] = optional(m.top_displacement);
   j["slide"] = slide(m.slide);
   j["nan_detected"] = m.nan_detected || !all_finite(m);  // a null above means a NaN
@@ -196,4 +196,4 @@ std::string hash_hex(std::uint64_t hash) {
   return buf;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::report

@@ -17,12 +17,12 @@
 #include <utility>
 #include <vector>
 
-#include "scenes/in_world.hpp"
+#include "experiments/in_world.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/svg.hpp"
+#include "report/svg.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 struct CompareOptions {
   bool quick = false;                       ///< the catalogue's quick step counts
@@ -70,15 +70,15 @@ struct SkipMeasurement;
 /// Scene `s` under backend `b` for `steps`, with every skip off, with `options.skips`, and (target)
 /// each skip alone, `skip_repetitions` times interleaved; each figure from the repetition with the
 /// least narrow-phase time.
-SkipMeasurement measure_skips(const SceneInfo& s, box2d::Backend b, int steps,
+SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int steps,
                               const CompareOptions& options);
 
 struct SkipMeasurement {
-  SceneMetrics off;  ///< `box2d::Config::none()`
-  SceneMetrics on;   ///< `CompareOptions::skips`
+  scenes::SceneMetrics off;  ///< `box2d::Config::none()`
+  scenes::SceneMetrics on;   ///< `CompareOptions::skips`
   /// `skip_target_scenes` with `skip_target_backend`: each switch alone, in `skip_switches` order,
   /// except `lin-canny-cache` (it changes nothing but `lin-canny`); empty otherwise.
-  std::vector<SceneMetrics> alone;
+  std::vector<scenes::SceneMetrics> alone;
 };
 
 /// True for a scene and backend of the target.
@@ -87,7 +87,7 @@ bool is_skip_target(const std::string& scene, const std::string& backend);
 /// `on`'s narrow-phase time per contact update over `off`'s. When the two worlds evolve
 /// identically (equal hashes) they have the same contact updates, so this is also the ratio of
 /// their total narrow-phase times.
-double narrowphase_ratio(const SceneMetrics& on, const SceneMetrics& off);
+double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetrics& off);
 
 /// True for the backends whose answer no skip changes (bit-identical worlds): every one but
 /// `lin-canny` (warm-started) and `dyop-fast` (approximate), as `box2d::Config` says.
@@ -96,12 +96,12 @@ bool skips_keep_the_answer(const std::string& backend);
 /// What the main run produced.
 struct CompareRun {
   CompareOptions options;
-  std::vector<SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
-  std::vector<std::pair<std::string, Drawing>> snapshots;  ///< per scene: `dyop`'s final state
+  std::vector<scenes::SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
+  std::vector<std::pair<std::string, scenes::Drawing>> snapshots;  ///< per scene: `dyop`'s final state
 };
 
 /// The scenes `options` selects, in catalogue order.
-std::vector<const SceneInfo*> selected_scenes(const CompareOptions& options);
+std::vector<const scenes::SceneInfo*> selected_scenes(const CompareOptions& options);
 
 /// Runs every scene selected under every backend, one progress line per scene and backend on
 /// `progress` (`elapsed`: seconds since the whole run started, for the lines' totals). Throws
@@ -110,6 +110,6 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
                        const std::function<double()>& elapsed);
 
 /// `m`'s narrow-phase time per pair over `box2d`'s for the same scene in `run` (none if absent).
-std::optional<double> ratio_to_box2d(const CompareRun& run, const SceneMetrics& m);
+std::optional<double> ratio_to_box2d(const CompareRun& run, const scenes::SceneMetrics& m);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

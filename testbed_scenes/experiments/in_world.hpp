@@ -21,13 +21,13 @@
 #include "scenes/metrics.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 /// One side of an in-world comparison: medians over the repetitions.
 struct InWorldSide {
   double narrowphase_ms = 0;  ///< `b2Profile::collide` over steps 2..N (ms)
   double step_ms = 0;         ///< `b2World::Step` over steps 2..N (ms)
-  double step_ms_median = 0;  ///< median wall time of one step (ms)
+  double step_ms_median = 0;  ///< scenes::median wall time of one step (ms)
   std::uint64_t contact_updates = 0;  ///< contact updates in steps 2..N (first repetition)
 };
 
@@ -53,6 +53,6 @@ int in_world_repetitions(bool quick);
 /// catalogue scene or a scaling size) and must give every call the same seed and steps. Throws
 /// `std::invalid_argument` for `repetitions` < 1, and what `run` throws.
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
-                              const std::function<SceneMetrics(const Runner&)>& run);
+                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -9,13 +9,13 @@
 
 #include "scenes/metrics.hpp"
 #include "scenes/scene.hpp"
-#include "scenes/svg.hpp"
+#include "report/svg.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 /// The runners of the slide section: Box2D's own contact (`box2d_own`) first, then the plug-in's
 /// backends: every one in a full run, the two exact ones (`dyop`, `sat`) with `quick`.
-std::vector<Runner> slide_runners(bool quick);
+std::vector<scenes::Runner> slide_runners(bool quick);
 
 /// One slider's path, sampled after every step.
 struct SliderPath {
@@ -27,13 +27,13 @@ struct SliderPath {
 
 /// The `slide` scene run under one runner.
 struct SlideRun {
-  SceneMetrics metrics;           ///< its figures (`metrics.slide` holds the sliders')
+  scenes::SceneMetrics metrics;           ///< its figures (`metrics.slide` holds the sliders')
   std::vector<SliderPath> paths;  ///< one per slider, in `metrics.slide->sliders` order
-  Drawing final_state;            ///< the world after the last step
+  scenes::Drawing final_state;            ///< the world after the last step
 };
 
 /// Runs `slide` for `steps` steps under `runner` with `config`, recording the paths.
-SlideRun run_slide(const Runner& runner, int steps, std::uint64_t seed,
+SlideRun run_slide(const scenes::Runner& runner, int steps, std::uint64_t seed,
                    const box2d::Config& config);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -1,4 +1,4 @@
-#include "scenes/rain_scaling.hpp"
+#include "experiments/rain_scaling.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,22 +6,22 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "scenes/progress.hpp"
-#include "scenes/in_world.hpp"
+#include "experiments/progress.hpp"
+#include "experiments/in_world.hpp"
 #include "scenes/scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 namespace {
 
 using detail::fixed;
 
-SceneMetrics run_rain(const Runner& runner, int falling, const ScalingOptions& options) {
-  const std::unique_ptr<Scene> scene = make_rain(falling, runner, options.seed);
+scenes::SceneMetrics run_rain(const scenes::Runner& runner, int falling, const ScalingOptions& options) {
+  const std::unique_ptr<scenes::Scene> scene = scenes::make_rain(falling, runner, options.seed);
   for (int i = 0; i < options.steps; ++i) scene->step();
   return scene->metrics();
 }
 
-ScalingRecord record_of(const SceneMetrics& m, int falling) {
+ScalingRecord record_of(const scenes::SceneMetrics& m, int falling) {
   ScalingRecord r;
   r.backend = m.backend;
   r.falling = falling;
@@ -48,13 +48,13 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
   }
   std::vector<ScalingRecord> records;
   for (int n : options.sizes) {
-    std::vector<SceneMetrics> own_runs;
+    std::vector<scenes::SceneMetrics> own_runs;
     for (box2d::Backend b : box2d::all_backends) {
       const auto start = std::chrono::steady_clock::now();
-      SceneMetrics backend_run;
+      scenes::SceneMetrics backend_run;
       const InWorldRatio pair = measure_in_world(
-          "rain-" + std::to_string(n), b, 1, [&](const Runner& runner) {
-            SceneMetrics m = run_rain(runner, n, options);
+          "rain-" + std::to_string(n), b, 1, [&](const scenes::Runner& runner) {
+            scenes::SceneMetrics m = run_rain(runner, n, options);
             (runner ? backend_run : own_runs.emplace_back()) = m;
             return m;
           });
@@ -70,7 +70,7 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
                << fixed(s, 1) << " s with the own run)\n";
     }
     // Box2D's own contact at this size: the run of median narrow-phase time.
-    std::sort(own_runs.begin(), own_runs.end(), [](const SceneMetrics& x, const SceneMetrics& y) {
+    std::sort(own_runs.begin(), own_runs.end(), [](const scenes::SceneMetrics& x, const scenes::SceneMetrics& y) {
       return x.narrowphase_ms_total < y.narrowphase_ms_total;
     });
     records.push_back(record_of(own_runs[own_runs.size() / 2], n));
@@ -87,4 +87,4 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
   return records;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -8,7 +8,7 @@
 
 #include "dyop/method.hpp"
 
-namespace dyop::measure {
+namespace dyop::adapters {
 
 /// The entry point of `m` for single pairs in precision T, or nullptr when this build cannot run
 /// it so: `Batch` (many pairs per call), `Box2D` in double or without Box2D. Box2D's answer is
@@ -26,4 +26,4 @@ bool runs_pairs(Method m) {
 extern template PairFunction<float> pair_function<float>(Method);
 extern template PairFunction<double> pair_function<double>(Method);
 
-}  // namespace dyop::measure
+}  // namespace dyop::adapters

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-namespace dyop::scenes::detail {
+namespace dyop::experiments::detail {
 
 /// `v` with `decimals` digits after the point, as printf's "%.<decimals>f" writes it.
 inline std::string fixed(double v, int decimals) {
@@ -16,4 +16,4 @@ inline std::string fixed(double v, int decimals) {
   return out.str();
 }
 
-}  // namespace dyop::scenes::detail
+}  // namespace dyop::experiments::detail

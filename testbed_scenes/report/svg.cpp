@@ -1,12 +1,15 @@
-#include "scenes/svg.hpp"
+#include "report/svg.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <ostream>
 
-namespace dyop::scenes {
+namespace dyop::report {
 namespace {
+
+using scenes::DrawShape;
+using scenes::Drawing;
 
 const char* fill_of(DrawShape::Role r) {
   switch (r) {
@@ -116,4 +119,4 @@ void write_svg(const Drawing& drawing, std::ostream& out) {
   out.precision(old_precision);
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::report

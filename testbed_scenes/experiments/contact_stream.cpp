@@ -1,4 +1,4 @@
-#include "scenes/contact_stream.hpp"
+#include "experiments/contact_stream.hpp"
 
 #include <box2d/box2d.h>
 
@@ -11,13 +11,13 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "scenes/progress.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/builders.hpp"
 #include "scenes/contact_probe.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -79,7 +79,7 @@ struct Replay {
 
 // The whole stream once, through the plug-in's backend or (Box2D's own) `b2CollidePolygons`;
 // `memory` holds one entry per contact and is reset first, untimed.
-Replay replay_once(const ContactStream& stream, const Runner& backend,
+Replay replay_once(const ContactStream& stream, const scenes::Runner& backend,
                    const box2d::Config& config, std::vector<box2d::ContactMemory>& memory) {
   memory.assign(stream.contacts.size(), box2d::ContactMemory{});
   Replay r;
@@ -105,7 +105,7 @@ Replay replay_once(const ContactStream& stream, const Runner& backend,
 
 // One timed pass, ns per call: the stream repeated until `min_pass_ms`, memories reset between
 // repetitions, so that every repetition starts as the world did.
-double timed_pass(const ContactStream& stream, const Runner& backend,
+double timed_pass(const ContactStream& stream, const scenes::Runner& backend,
                   const StreamOptions& options, std::vector<box2d::ContactMemory>& memory) {
   double total = 0;
   std::uint64_t calls = 0;
@@ -118,10 +118,10 @@ double timed_pass(const ContactStream& stream, const Runner& backend,
   return total * 1e9 / static_cast<double>(calls);
 }
 
-const WorldBuilder* checked_builder(std::string_view name, int steps) {
-  const WorldBuilder* build = detail::find_builder(name);
+const scenes::WorldBuilder* checked_builder(std::string_view name, int steps) {
+  const scenes::WorldBuilder* build = scenes::detail::find_builder(name);
   if (build == nullptr) {
-    throw std::invalid_argument(find_scene(name) == nullptr
+    throw std::invalid_argument(scenes::find_scene(name) == nullptr
                                     ? "unknown scene '" + std::string(name) + "'"
                                     : "scene '" + std::string(name) +
                                           "' has no Box2D world: no contact stream");
@@ -140,24 +140,24 @@ std::uint64_t ContactStream::triangle_calls() const {
 
 std::vector<std::string> stream_scenes() {
   std::vector<std::string> out;
-  for (const SceneInfo& s : scene_catalog()) {
-    if (detail::find_builder(s.name) != nullptr) out.emplace_back(s.name);
+  for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
+    if (scenes::detail::find_builder(s.name) != nullptr) out.emplace_back(s.name);
   }
   return out;
 }
 
 ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed) {
-  const WorldBuilder* build = checked_builder(name, steps);
+  const scenes::WorldBuilder* build = checked_builder(name, steps);
   box2d::uninstall();
 
   ContactStream stream;
   stream.scene = std::string(name);
   stream.seed = seed;
   stream.steps = steps;
-  World world;
+  scenes::World world;
   workloads::Random rng(seed);
   (*build)(world, rng);
-  const CollideRule rule(world.get());
+  const scenes::CollideRule rule(world.get());
   // The id of every live polygon contact. Keyed by the contact itself: Box2D may reuse a freed
   // contact's memory for a new one, but an ending contact is erased on the pass whose step
   // destroys it, so a reused address always starts a new id.
@@ -168,14 +168,14 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
       const b2PolygonShape* a = polygon(c->GetFixtureA());
       const b2PolygonShape* b = polygon(c->GetFixtureB());
       if (a == nullptr || b == nullptr) continue;
-      const CollideAction action = rule.action(world.get(), *c);
-      if (action == CollideAction::Destroy) {
+      const scenes::CollideAction action = rule.action(world.get(), *c);
+      if (action == scenes::CollideAction::Destroy) {
         live.erase(c);
         continue;
       }
       auto [it, created] = live.try_emplace(c, static_cast<std::int32_t>(stream.contacts.size()));
       if (created) stream.contacts.push_back({*a, *b, a->m_count == 3 && b->m_count == 3});
-      if (action == CollideAction::Skip) continue;
+      if (action == scenes::CollideAction::Skip) continue;
       stream.calls.push_back({it->second, step, c->GetFixtureA()->GetBody()->GetTransform(),
                               c->GetFixtureB()->GetBody()->GetTransform()});
     }
@@ -186,7 +186,7 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
 
 std::uint64_t world_evaluations(std::string_view name, int steps, std::uint64_t seed) {
   checked_builder(name, steps);
-  const std::unique_ptr<Scene> scene = make_scene(name, box2d::Backend::Box2D, seed);
+  const std::unique_ptr<scenes::Scene> scene = scenes::make_scene(name, box2d::Backend::Box2D, seed);
   scene->step();  // step 1 is not in the stream
   const box2d::Stats first = box2d::stats();
   for (int step = 2; step <= steps; ++step) scene->step();
@@ -237,7 +237,7 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
 
   // Runner k < backend_count is all_backends[k]; the last is box2d-own.
   constexpr int runners = box2d::backend_count + 1;
-  auto backend_of = [](int k) -> Runner {
+  auto backend_of = [](int k) -> scenes::Runner {
     if (k == box2d::backend_count) return std::nullopt;
     return box2d::all_backends[k];
   };
@@ -251,8 +251,8 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
     agree(m, m, c, call, own);
   }
   for (int k = 0; k < runners; ++k) {
-    const Runner b = backend_of(k);
-    r.runners[k].runner = name(b);
+    const scenes::Runner b = backend_of(k);
+    r.runners[k].runner = scenes::name(b);
     r.runners[k].agreement = b ? compare_with_box2d(stream, *b, options.config) : own;
     r.runners[k].ns_per_call = HUGE_VAL;
   }
@@ -286,4 +286,4 @@ std::vector<StreamResult> run_streams(const StreamOptions& options, std::ostream
   return out;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -1,19 +1,19 @@
-#include "scenes/in_world.hpp"
+#include "experiments/in_world.hpp"
 
 #include <stdexcept>
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 namespace {
 
 // The medians of one side's runs.
-InWorldSide side_of(const std::vector<SceneMetrics>& runs) {
+InWorldSide side_of(const std::vector<scenes::SceneMetrics>& runs) {
   std::vector<double> collide, step, step_median;
-  for (const SceneMetrics& m : runs) {
+  for (const scenes::SceneMetrics& m : runs) {
     collide.push_back(m.narrowphase_ms_total);
     step.push_back(m.step_ms_total);
     step_median.push_back(m.step_ms_median);
   }
-  return {median(collide), median(step), median(step_median), runs.front().contact_updates};
+  return {scenes::median(collide), scenes::median(step), scenes::median(step_median), runs.front().contact_updates};
 }
 
 }  // namespace
@@ -21,9 +21,9 @@ InWorldSide side_of(const std::vector<SceneMetrics>& runs) {
 int in_world_repetitions(bool quick) { return quick ? 2 : 3; }
 
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
-                              const std::function<SceneMetrics(const Runner&)>& run) {
+                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run) {
   if (repetitions < 1) throw std::invalid_argument("in-world runs need at least one repetition");
-  std::vector<SceneMetrics> own, plugin;
+  std::vector<scenes::SceneMetrics> own, plugin;
   for (int i = 0; i < repetitions; ++i) {
     own.push_back(run(std::nullopt));
     plugin.push_back(run(backend));
@@ -38,4 +38,4 @@ InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, 
   return r;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -1,11 +1,23 @@
 // The paper's Figure-7 experiment: every method timed over the same steps, errors against exact.
+#include "experiments/paper_experiment.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <stdexcept>
 
+#include "adapters/pair_function.hpp"
 #include "scenes/paper_harness.hpp"
 
-namespace dyop::scenes::paper {
+namespace dyop::experiments::paper {
+
+using namespace scenes::paper;  // the scene's triangles, paths, frames and timing harness
+using scenes::ErrorTally;
+using scenes::median;
+
+std::vector<Variant> experiment_methods() {
+  return variants([](const MethodInfo& row) { return adapters::runs_pairs<float>(row.method); });
+}
+
 
 Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   Experiment e;
@@ -38,8 +50,8 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   const int n_methods = static_cast<int>(methods.size());
   std::vector<std::array<std::vector<double>, type_count>> type_us(methods.size());
   std::vector<std::vector<double>> total_us(methods.size()), all_us(methods.size());
-  std::vector<LinCannyCache> caches(pair_count);
-  const std::vector<LinCannyCache> cold(pair_count);
+  std::vector<PairState> caches(pair_count);
+  const std::vector<PairState> cold(pair_count);
   for (int rep = 0; rep < repetitions; ++rep) {
     for (int n = 0; n < n_methods; ++n) {
       const int m = (n + rep) % n_methods;  // a different method first each repetition
@@ -82,4 +94,4 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   return e;
 }
 
-}  // namespace dyop::scenes::paper
+}  // namespace dyop::experiments::paper

@@ -1,11 +1,9 @@
 #pragma once
 /// \file
-/// A scene's state as a picture: shapes in world coordinates (y up), written as SVG by hand (no
-/// dependency), centred on the shapes' bounding box so that a scene 10 km from the origin draws
-/// as sharply as one at the origin.
+/// A scene's state as a picture to draw: shapes in world coordinates (y up). The report draws it
+/// (`report/svg.hpp`); scenes only say what is there.
 
 #include <cstdint>
-#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -32,8 +30,5 @@ struct Drawing {
   std::string title;
   std::vector<DrawShape> shapes;
 };
-
-/// The drawing as a standalone SVG document, 800 px wide.
-void write_svg(const Drawing& drawing, std::ostream& out);
 
 }  // namespace dyop::scenes

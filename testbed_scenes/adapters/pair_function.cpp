@@ -1,4 +1,4 @@
-#include "measure/pair_function.hpp"
+#include "adapters/pair_function.hpp"
 
 #include <type_traits>
 
@@ -6,12 +6,12 @@
 #include "box2d_reference/collide_triangles.hpp"
 #endif
 
-namespace dyop::measure {
+namespace dyop::adapters {
 namespace {
 
 #ifdef DYOP_WITH_BOX2D
 Result<float> box2d_pair(const Triangle<float>& a, const Triangle<float>& b, const Query<float>&,
-                         LinCannyCache*) {
+                         PairState*) {
   return box2d::collide_triangles(a, b);
 }
 #endif
@@ -36,4 +36,4 @@ PairFunction<T> pair_function(Method m) {
 template PairFunction<float> pair_function<float>(Method);
 template PairFunction<double> pair_function<double>(Method);
 
-}  // namespace dyop::measure
+}  // namespace dyop::adapters

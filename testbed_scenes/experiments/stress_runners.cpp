@@ -1,15 +1,18 @@
-#include "measure/stress_runners.hpp"
+#include "experiments/stress_runners.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
-#include "measure/pair_function.hpp"
+#include "adapters/pair_function.hpp"
 #include "workloads/batch_arrays.hpp"
 #include "workloads/finite_fields.hpp"
 
-namespace dyop::measure {
+namespace dyop::experiments {
+
+using adapters::pair_function;
+using adapters::runs_pairs;
 namespace {
 
 using workloads::finite_at;
@@ -34,7 +37,7 @@ std::vector<StressAnswer> pair_answers(Method m, const std::vector<workloads::Ra
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto t = workloads::build<T>(pairs[k]);
     if (!t.a.ok() || !t.b.ok()) continue;
-    LinCannyCache cache;
+    PairState cache;
     const Result<T> r = run(t.a.triangle, t.b.triangle, Query<T>{Level::Depth}, &cache);
     bool finite = finite_at(r, box2d ? Level::Contact : Level::Depth);
     if (with_manifold && !box2d) {
@@ -99,4 +102,4 @@ template std::vector<StressAnswer> stress_answers<float>(Method,
 template std::vector<StressAnswer> stress_answers<double>(Method,
                                                           const std::vector<workloads::RawPair>&, bool);
 
-}  // namespace dyop::measure
+}  // namespace dyop::experiments

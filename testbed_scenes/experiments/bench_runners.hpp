@@ -10,7 +10,7 @@
 #include "dyop/result.hpp"
 #include "workloads/pair_sets.hpp"
 
-namespace dyop::measure {
+namespace dyop::experiments {
 
 /// Every variant `dyop bench` runs, in registry order (cold before warm).
 std::vector<Variant> bench_variants();
@@ -39,4 +39,4 @@ std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& se
 template <class T>
 double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level level, int passes);
 
-}  // namespace dyop::measure
+}  // namespace dyop::experiments

@@ -1,4 +1,4 @@
-#include "scenes/thread_scaling.hpp"
+#include "experiments/thread_scaling.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,11 +9,11 @@
 
 #include "dyop/box2d.hpp"
 #include "scenes/builders.hpp"
-#include "scenes/progress.hpp"
+#include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/scene_world.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 namespace {
 
 using detail::fixed;
@@ -21,13 +21,13 @@ using detail::fixed;
 // One run: `n` copies of the scene under whatever is installed, each stepped on its own thread.
 // Seconds from the threads' start to the last one's end.
 double timed_run(const ThreadScalingOptions& options, int n) {
-  std::vector<std::unique_ptr<SceneWorld>> worlds;
+  std::vector<std::unique_ptr<scenes::SceneWorld>> worlds;
   for (int i = 0; i < n; ++i) {
-    worlds.push_back(std::make_unique<SceneWorld>(options.scene, options.seed));
+    worlds.push_back(std::make_unique<scenes::SceneWorld>(options.scene, options.seed));
   }
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::thread> threads;
-  for (std::unique_ptr<SceneWorld>& w : worlds) {
+  for (std::unique_ptr<scenes::SceneWorld>& w : worlds) {
     threads.emplace_back([&w, &options] {
       for (int s = 0; s < options.steps; ++s) w->step();
     });
@@ -46,10 +46,10 @@ std::vector<ThreadScalingRecord> run_thread_scaling(const ThreadScalingOptions& 
   for (int n : options.threads) {
     if (n < 1) throw std::invalid_argument("thread scaling needs at least 1 thread per run");
   }
-  if (detail::find_builder(options.scene) == nullptr) {
+  if (scenes::detail::find_builder(options.scene) == nullptr) {
     throw std::invalid_argument("thread scaling: no Box2D scene called '" + options.scene + "'");
   }
-  const Runner runners[] = {std::nullopt, box2d::Backend::Dyop};
+  const scenes::Runner runners[] = {std::nullopt, box2d::Backend::Dyop};
   std::vector<ThreadScalingRecord> records;
   for (int n : options.threads) {
     double best[2] = {0, 0};
@@ -67,7 +67,7 @@ std::vector<ThreadScalingRecord> run_thread_scaling(const ThreadScalingOptions& 
     box2d::uninstall();
     for (int k = 0; k < 2; ++k) {
       ThreadScalingRecord r;
-      r.runner = name(runners[k]);
+      r.runner = scenes::name(runners[k]);
       r.threads = n;
       r.steps = options.steps;
       r.seconds = best[k];
@@ -83,4 +83,4 @@ std::vector<ThreadScalingRecord> run_thread_scaling(const ThreadScalingOptions& 
   return records;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

@@ -8,7 +8,7 @@
 /// and Box2D's `GetProfile().collide` (contact updates), both over steps 2..N. Each size is run
 /// once per backend with the same seed, so every backend meets the same falling triangles, and
 /// each backend's run is preceded by a run of Box2D's own contact with the plug-in not installed
-/// (`box2d-own`, `scenes/in_world.hpp`): the backend's `ratio_vs_own` and `step_ratio_vs_own`
+/// (`box2d-own`, `experiments/in_world.hpp`): the backend's `ratio_vs_own` and `step_ratio_vs_own`
 /// come from that pair of runs, alternating in one process. One `box2d-own` record per size
 /// carries the median of its runs.
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 struct ScalingOptions {
   std::vector<int> sizes = {100, 300, 1000, 3000};  ///< falling triangles per run
@@ -33,7 +33,7 @@ struct ScalingRecord {
   int falling = 0;              ///< falling triangles
   int triangles = 0;            ///< every triangle fixture, the bin's included
   int steps = 0;                ///< steps run
-  double step_ms_median = 0;    ///< median wall time of a step (ms)
+  double step_ms_median = 0;    ///< scenes::median wall time of a step (ms)
   double narrowphase_ms_per_step = 0;  ///< Box2D's collide time per measured step (ms)
   double narrowphase_ns_per_pair = 0;  ///< the same per contact update (ns)
   double pairs_per_step = 0;    ///< triangle contact updates per measured step
@@ -53,4 +53,4 @@ struct ScalingRecord {
 /// `std::invalid_argument` for a size below 1 or steps below 2.
 std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options, std::ostream& progress);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

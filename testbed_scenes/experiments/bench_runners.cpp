@@ -1,4 +1,4 @@
-#include "measure/bench_runners.hpp"
+#include "experiments/bench_runners.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,13 +7,16 @@
 
 #include "dyop/batch.hpp"
 #include "dyop/method.hpp"
-#include "measure/pair_function.hpp"
+#include "adapters/pair_function.hpp"
 #include "workloads/batch_arrays.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "box2d_reference/box2d_pair_set.hpp"
 #endif
 
-namespace dyop::measure {
+namespace dyop::experiments {
+
+using adapters::pair_function;
+using adapters::runs_pairs;
 namespace {
 
 // Keeps results alive without storing them: the compiler cannot drop a call whose result feeds
@@ -91,7 +94,7 @@ std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& se
   const PairFunction<T> run = pair_function<T>(v.method);
   if (run == nullptr) return out;
   for (std::size_t k = 0; k < set.size(); ++k) {
-    LinCannyCache cache;
+    PairState cache;
     if (v.warm) run(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
     keep(k, run(set.a[k], set.b[k], Query<T>{}, &cache));
   }
@@ -115,7 +118,7 @@ double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level l
         });
       }
       // Every pass is one frame of a small motion: the caches hold the previous frame's features.
-      std::vector<LinCannyCache> cache(n);
+      std::vector<PairState> cache(n);
       for (std::size_t k = 0; k < n; ++k) penetrate(v.method, set.a[k], set.b_next[k], q, &cache[k]);
       return median_ns(n, passes, [&](int pass) {
         const std::vector<Triangle<T>>& b = pass % 2 == 0 ? set.b : set.b_next;
@@ -160,4 +163,4 @@ template std::vector<Answer<double>> answers(const Variant&, const workloads::Pa
 template double time_per_pair(const Variant&, const workloads::PairSet<float>&, Level, int);
 template double time_per_pair(const Variant&, const workloads::PairSet<double>&, Level, int);
 
-}  // namespace dyop::measure
+}  // namespace dyop::experiments

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
 struct ThreadScalingOptions {
   std::vector<int> threads = {1, 2, 4};  ///< worlds, one per thread, per run
@@ -45,4 +45,4 @@ struct ThreadScalingRecord {
 std::vector<ThreadScalingRecord> run_thread_scaling(const ThreadScalingOptions& options,
                                                     std::ostream& progress);
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

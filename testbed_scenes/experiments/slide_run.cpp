@@ -1,12 +1,12 @@
-#include "scenes/slide_run.hpp"
+#include "experiments/slide_run.hpp"
 
 #include "scenes/builders.hpp"
 #include "scenes/world_scene.hpp"
 
-namespace dyop::scenes {
+namespace dyop::experiments {
 
-std::vector<Runner> slide_runners(bool quick) {
-  std::vector<Runner> runners = {std::nullopt};
+std::vector<scenes::Runner> slide_runners(bool quick) {
+  std::vector<scenes::Runner> runners = {std::nullopt};
   if (quick) {
     runners.insert(runners.end(), {box2d::Backend::Dyop, box2d::Backend::Sat});
   } else {
@@ -15,13 +15,13 @@ std::vector<Runner> slide_runners(bool quick) {
   return runners;
 }
 
-SlideRun run_slide(const Runner& runner, int steps, std::uint64_t seed,
+SlideRun run_slide(const scenes::Runner& runner, int steps, std::uint64_t seed,
                    const box2d::Config& config) {
-  WorldScene scene("slide", runner, seed, config, *detail::find_builder("slide"));
-  const std::vector<Slider>& sliders = scene.build().sliders;
+  scenes::WorldScene scene("slide", runner, seed, config, *scenes::detail::find_builder("slide"));
+  const std::vector<scenes::Slider>& sliders = scene.build().sliders;
   SlideRun run;
   std::vector<b2Vec2> start;
-  for (const Slider& s : sliders) {
+  for (const scenes::Slider& s : sliders) {
     run.paths.push_back({s.figures.body, s.figures.ground, {}, {}});
     start.push_back(s.body->GetWorldCenter());
   }
@@ -38,4 +38,4 @@ SlideRun run_slide(const Runner& runner, int steps, std::uint64_t seed,
   return run;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::experiments

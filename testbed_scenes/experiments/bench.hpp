@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// `dyop bench`'s experiment: run time against error for every runner, input class, query level and precision,
+/// with every time also given as a ratio to Box2D's `b2CollidePolygons` measured in the same run.
+///
+/// Error is measured against the exact rational reference (`exact_reference/exact_reference.hpp`)
+/// on the pairs exactly as the precision sees them (float runs get float-rounded input), at
+/// `Level::Depth`: |depth − exact depth| relative to the pair's size (the diagonal of the union
+/// of both bounding boxes). The same error figures stand on every level's record of a runner.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+
+namespace dyop::experiments {
+
+struct BenchOptions {
+  bool quick = false;   ///< fewer timed passes of ≥ 20 ms (5 instead of 21); 8192 pairs each
+  int pairs = 8192;     ///< distinct pairs per class
+};
+
+/// One line of the report.
+struct BenchRecord {
+  std::string method;     ///< runner name, "batch", "box2d", "lin-canny-warm", ...
+  std::string cls;        ///< input class
+  std::string level;      ///< "overlap", "depth", "contact", "manifold"
+  std::string precision;  ///< "float" or "double"
+  int pairs = 0;          ///< pairs timed and checked
+  double ns_per_pair = 0;       ///< median over the timed passes
+  double ratio_vs_box2d = 0;    ///< ns_per_pair / box2d's (same class, float, manifold)
+  double err_max = 0;           ///< max |depth error| / pair size
+  double err_mean = 0;          ///< mean of the same
+  double err_p99 = 0;           ///< 99th percentile of the same
+  double exact_fraction = 0;    ///< fraction of pairs with |depth error| / size ≤ 1e-9
+  double normal_err_max = 0;    ///< max angle (rad) to sat's normal on pairs both call penetrating
+  double normal_err_mean = 0;   ///< mean of the same
+  int misclassified = 0;        ///< penetrating vs not, against the exact sign, outside the band
+  int invalid = 0;              ///< pairs the runner answered Invalid (left out of the errors)
+};
+
+/// Runs everything; one progress line per runner and class on `progress`.
+std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& progress);
+
+}  // namespace dyop::experiments

@@ -1,0 +1,149 @@
+#include "report/records.hpp"
+
+#include <cstdlib>
+#include <ostream>
+#include <stdexcept>
+
+#include "report/format.hpp"
+
+namespace dyop::report {
+
+Value Value::text(std::string s) {
+  Value v;
+  v.kind_ = Kind::Text;
+  v.text_ = std::move(s);
+  return v;
+}
+
+Value Value::count(std::int64_t n) {
+  Value v;
+  v.kind_ = Kind::Count;
+  v.count_ = n;
+  return v;
+}
+
+Value Value::number(double x, const char* display) {
+  Value v;
+  v.kind_ = Kind::Number;
+  v.number_ = x;
+  v.display_ = display;
+  return v;
+}
+
+Value Value::metres(double x) {
+  Value v = number(x, "%.2e");
+  v.kind_ = Kind::Metres;
+  return v;
+}
+
+std::string Value::displayed() const {
+  switch (kind_) {
+    case Kind::Text:
+      return text_;
+    case Kind::Count:
+      return std::to_string(count_);
+    case Kind::Number:
+      return fmt(display_, number_);
+    case Kind::Metres:
+      return report::metres(number_);
+  }
+  return {};
+}
+
+std::string Value::csv() const {
+  // Text and counts read the same everywhere; figures get the CSV's own precision.
+  return kind_ == Kind::Number || kind_ == Kind::Metres ? csv_number(number_) : displayed();
+}
+
+Json Value::json() const {
+  switch (kind_) {
+    case Kind::Text:
+      return Json(text_);
+    case Kind::Count:
+      return Json(count_);
+    case Kind::Number:
+    case Kind::Metres:
+      return json_number(number_);
+  }
+  return Json(nullptr);
+}
+
+Records::Records(std::vector<Column> columns) : columns_(std::move(columns)) {}
+
+void Records::add(std::vector<Value> row) {
+  if (row.size() != columns_.size()) {
+    throw std::logic_error("Records::add: " + std::to_string(row.size()) + " values for " +
+                           std::to_string(columns_.size()) + " columns");
+  }
+  rows_.push_back(std::move(row));
+}
+
+namespace {
+
+// `s` padded to `width` characters (negative: on the right, as printf's "%-Ns").
+void write_cell(std::ostream& out, const std::string& s, int width) {
+  const std::size_t w = static_cast<std::size_t>(std::abs(width));
+  const std::string pad = s.size() < w ? std::string(w - s.size(), ' ') : std::string();
+  out << (width < 0 ? s + pad : pad + s);
+}
+
+}  // namespace
+
+void Records::write_table(std::ostream& out) const {
+  auto line = [&](auto cell) {
+    bool first = true;
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      if (!(columns_[c].where & where::table)) continue;
+      if (!first) out << ' ';
+      first = false;
+      write_cell(out, cell(c), columns_[c].width);
+    }
+    out << '\n';
+  };
+  line([&](std::size_t c) {
+    return columns_[c].abbreviation.empty() ? columns_[c].key : columns_[c].abbreviation;
+  });
+  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].displayed(); });
+}
+
+void Records::write_csv(std::ostream& out) const {
+  auto line = [&](auto cell) {
+    bool first = true;
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      if (!(columns_[c].where & where::csv)) continue;
+      if (!first) out << ',';
+      first = false;
+      out << cell(c);
+    }
+    out << '\n';
+  };
+  line([&](std::size_t c) { return columns_[c].key; });
+  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].csv(); });
+}
+
+void Records::write_markdown(std::ostream& out) const {
+  auto line = [&](auto cell) {
+    out << '|';
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      if (columns_[c].where & where::markdown) out << ' ' << cell(c) << " |";
+    }
+    out << '\n';
+  };
+  line([&](std::size_t c) { return columns_[c].heading; });
+  line([](std::size_t) { return std::string("---"); });
+  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].displayed(); });
+}
+
+Json Records::json() const {
+  Json list = Json::array();
+  for (const auto& row : rows_) {
+    Json object = Json::object();
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      if (columns_[c].where & where::json) object[columns_[c].key] = row[c].json();
+    }
+    list.push_back(std::move(object));
+  }
+  return list;
+}
+
+}  // namespace dyop::report
