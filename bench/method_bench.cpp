@@ -17,6 +17,7 @@
 #include "workloads/batch_arrays.hpp"
 #include "workloads/pair_sets.hpp"
 #ifdef DYOP_WITH_BOX2D
+#include "adapters/narrow_phase.hpp"
 #include "box2d_reference/box2d_pair_set.hpp"
 #include "experiments/contact_stream.hpp"
 #endif
@@ -196,15 +197,22 @@ void register_method(const MethodInfo& row) {
                                          bm_batch<T>, c, l, std::size_t{1} << 20);
           }
           break;
-        case Entry::Box2D:
-#ifdef DYOP_WITH_BOX2D
-          benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_box2d, c);
-#endif
-          break;
       }
     }
   }
 }
+
+#ifdef DYOP_WITH_BOX2D
+// Box2D's b2CollidePolygons, the production reference: float, its whole manifold.
+void register_box2d() {
+  for (InputClass c : workloads::bench_classes) {
+    const std::string name = std::string("BM_") + adapters::name(adapters::NarrowPhase::box2d()) +
+                             "/" + workloads::name(c) + "/" + dyop::name(Level::Manifold) +
+                             "/float";
+    benchmark::RegisterBenchmark(name.c_str(), bm_box2d, c);
+  }
+}
+#endif
 
 }  // namespace
 
@@ -214,6 +222,7 @@ int main(int argc, char** argv) {
     register_method<double>(row);
   }
 #ifdef DYOP_WITH_BOX2D
+  register_box2d();
   register_streams();
 #endif
   benchmark::Initialize(&argc, argv);

@@ -25,7 +25,7 @@ bool add_triangle(b2Body* body, b2Vec2 p0, b2Vec2 p1, b2Vec2 p2, float density) 
 
 int main() {
   // Line 1 of 2 is the include above; line 2 registers the plug-in before any contact exists.
-  const dyop::box2d::InstallResult installed = dyop::box2d::install(dyop::Method::Dyop);
+  const dyop::box2d::InstallResult installed = dyop::box2d::install(dyop::box2d::Backend::Dyop);
   if (!installed.ok()) {
     std::fprintf(stderr, "install: %s\n", installed.message);
     return EXIT_FAILURE;

@@ -7,7 +7,7 @@
 # build-fuzz/bin/fuzz_method --method=NAME <file>).
 #   FUZZ_SECONDS  seconds per target (default 20)
 #   FUZZ_TARGETS  targets to run (default: all): fuzz_csv, and method:NAME for each method of the
-#                 registry that runs without Box2D (fuzz_method --list-methods)
+#                 registry (fuzz_method --list-methods)
 #   FUZZ_SEED     libFuzzer's seed (default 1, so that CI explores the same inputs every run and
 #                 passes or fails alike; 0 lets libFuzzer pick one, for hunting)
 # Needs clang and libFuzzer's runtime (Debian 12: clang, libclang-rt-14-dev).

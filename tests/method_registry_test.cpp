@@ -1,4 +1,4 @@
-// The registry of narrow phases (dyop/method.hpp): every tool lists methods from it, so each row
+// The registry of the library's methods (dyop/method.hpp): every tool lists methods from it, so each row
 // must be callable the way it says and spelt once.
 #include <gtest/gtest.h>
 
@@ -26,9 +26,10 @@ TEST(MethodRegistry, EveryNameIsUniqueAndParsesBackToItsMethod) {
   }
   EXPECT_FALSE(parse_method("lin-canny-warm").has_value());
   EXPECT_FALSE(parse_method("").has_value());
-  // A filter keeps the rows it names: Box2D's own code is no method of the solver alone.
-  EXPECT_EQ(parse_method("sat", [](const MethodInfo& r) { return !r.needs_box2d(); }), Method::Sat);
-  EXPECT_FALSE(parse_method("box2d", [](const MethodInfo& r) { return !r.needs_box2d(); }));
+  // A filter keeps the rows it names; an engine's own narrow phase is no method of the library.
+  EXPECT_EQ(parse_method("sat", [](const MethodInfo& r) { return r.simulation(); }), Method::Sat);
+  EXPECT_FALSE(parse_method("dyop-paper", [](const MethodInfo& r) { return r.simulation(); }));
+  EXPECT_FALSE(parse_method("box2d").has_value());
 }
 
 TEST(MethodRegistry, VariantNamesSayColdOrWarmOnlyForWarmStartableMethods) {
@@ -65,9 +66,9 @@ TEST(MethodRegistry, EveryPerPairRowAnswersThroughPenetrateAsItsOwnFunction) {
 
 TEST(MethodRegistry, PenetrateRefusesMethodsThatAnswerNoSinglePair) {
   const Triangle<float> a = tri(0.0f, 0.0f, 2.0f, 0.0f, 0.0f, 2.0f);
-  for (Method m : {Method::Batch, Method::Box2D}) {
-    EXPECT_EQ(penetrate(m, a, a).status, Status::Invalid) << name(m);
-  }
+  const Result<float> r = penetrate(Method::Batch, a, a);
+  EXPECT_EQ(r.status, Status::Invalid);
+  EXPECT_EQ(r.reason, InvalidReason::NotPairMethod);
 }
 
 TEST(MethodRegistry, ExactAndToleranceMethodsAreTheInvariantOnes) {
@@ -76,8 +77,7 @@ TEST(MethodRegistry, ExactAndToleranceMethodsAreTheInvariantOnes) {
   EXPECT_TRUE(info(Method::Batch).invariant());
   EXPECT_TRUE(info(Method::Epa).invariant());
   EXPECT_FALSE(info(Method::LinCanny).invariant());
-  EXPECT_FALSE(info(Method::Box2D).invariant());
-  EXPECT_TRUE(info(Method::Box2D).needs_box2d());
+  EXPECT_FALSE(info(Method::DyopFast).invariant());
 }
 
 }  // namespace

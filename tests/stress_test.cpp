@@ -19,6 +19,12 @@ using workloads::InputClass;
 using workloads::Precision;
 using workloads::RawPair;
 
+// "method precision class", for failure messages and recorded figures.
+std::string what(const StressRecord& r) {
+  return std::string(adapters::name(r.method)) + " " + workloads::name(r.precision) + " " +
+         workloads::name(r.cls);
+}
+
 constexpr int kPairs = 400;  // per category and precision: about a second in Release
 
 class StressPromises : public ::testing::TestWithParam<Precision> {
@@ -36,7 +42,7 @@ class StressPromises : public ::testing::TestWithParam<Precision> {
       r = run_stress(o, progress);
       for (const StressRecord& x : r) {
         ::testing::Test::RecordProperty(
-            x.method + "." + x.precision + "." + x.cls,
+            what(x),
             "max " + std::to_string(x.err_max) + ", p99 " + std::to_string(x.err_p99) +
                 ", nonfinite " + std::to_string(x.nonfinite) + ", misclassified " +
                 std::to_string(x.misclassified) + ", rejected " + std::to_string(x.rejected));
@@ -49,36 +55,36 @@ class StressPromises : public ::testing::TestWithParam<Precision> {
 TEST_P(StressPromises, SatDyopAndBatchAreExactInEveryCategory) {
   const double bound = exact_bound(GetParam());
   for (const StressRecord& r : records(GetParam())) {
-    if (!promises_exact(r.runner)) continue;
-    EXPECT_LE(r.err_max, bound) << r.method << " " << r.cls << ", worst pair " << r.worst_pair;
-    EXPECT_EQ(r.misclassified, 0) << r.method << " " << r.cls;
-    EXPECT_EQ(r.invalid, 0) << r.method << " " << r.cls;
+    if (!promises_exact(r.method)) continue;
+    EXPECT_LE(r.err_max, bound) << what(r) << ", worst pair " << r.worst_pair;
+    EXPECT_EQ(r.misclassified, 0) << what(r);
+    EXPECT_EQ(r.invalid, 0) << what(r);
   }
 }
 
 TEST_P(StressPromises, NoMethodGivesNaNOrInfOnValidInput) {
   for (const StressRecord& r : records(GetParam())) {
     // Box2D's own code is measured, not promised: see the README's stress section.
-    if (r.runner == Method::Box2D) continue;
-    EXPECT_EQ(r.nonfinite, 0) << r.method << " " << r.cls;
+    if (r.method == adapters::NarrowPhase::box2d()) continue;
+    EXPECT_EQ(r.nonfinite, 0) << what(r);
   }
 }
 
 TEST_P(StressPromises, OnlyDyopPaperAnswersInvalidAndOnlyByDesign) {
   for (const StressRecord& r : records(GetParam())) {
-    EXPECT_EQ(r.invalid, 0) << r.method << " " << r.cls;
-    if (r.runner != Method::DyopPaper) {
-      EXPECT_EQ(r.invalid_by_design, 0) << r.method;
+    EXPECT_EQ(r.invalid, 0) << what(r);
+    if (r.method != adapters::NarrowPhase::of(Method::DyopPaper)) {
+      EXPECT_EQ(r.invalid_by_design, 0) << what(r);
     }
   }
 }
 
 TEST_P(StressPromises, SatDyopEpaAndBatchAreInvariantUnderMotionReorderingAndSwapping) {
   for (const StressRecord& r : records(GetParam())) {
-    if (!promises_invariance(r.runner)) continue;
+    if (!promises_invariance(r.method)) continue;
     for (int k = 0; k < invariance_count; ++k) {
       EXPECT_EQ(r.invariance[k], 0)
-          << r.method << " " << r.cls << " " << name(static_cast<Invariance>(k));
+          << what(r) << " " << name(static_cast<Invariance>(k));
     }
   }
 }
@@ -94,12 +100,12 @@ TEST_P(StressPromises, BrokenPromisesListsNothing) {
 // float's min_size); a double never rejects what its generator meant to be valid.
 TEST_P(StressPromises, OnlyDegenerateCategoriesHaveRejectedPairs) {
   for (const StressRecord& r : records(GetParam())) {
-    const bool may_reject = r.cls == "nearly-collinear" ||
-                            (GetParam() == Precision::Float && (r.cls == "sliver" || r.cls == "scale"));
+    const bool may_reject = r.cls == InputClass::NearlyCollinear ||
+                            (GetParam() == Precision::Float && (r.cls == InputClass::Sliver || r.cls == InputClass::Scale));
     if (!may_reject) {
-      EXPECT_EQ(r.rejected, 0) << r.cls;
+      EXPECT_EQ(r.rejected, 0) << what(r);
     }
-    if (r.cls == "nearly-collinear") {
+    if (r.cls == InputClass::NearlyCollinear) {
       // The category straddles the tolerance: some triangles pass, some are rejected.
       EXPECT_GT(r.rejected, 0);
       EXPECT_LT(r.rejected, r.pairs);

@@ -3,11 +3,28 @@
 
 namespace dyop::box2d {
 
+namespace {
+
+constexpr InstallResult kNotABackend = {
+    InstallStatus::UnsupportedMethod,
+    "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
+
+}  // namespace
+
+std::optional<Backend> parse_backend(std::string_view s) {
+  if (s == name(Backend::Box2D)) return Backend::Box2D;
+  const std::optional<Method> m =
+      parse_method(s, [](const MethodInfo& row) { return row.simulation(); });
+  return m ? backend_of(*m) : std::nullopt;
+}
+
+InstallResult install(Method method, const Config& config) {
+  const std::optional<Backend> backend = backend_of(method);
+  return backend ? install(*backend, config) : kNotABackend;
+}
+
 InstallResult install(Backend backend, const Config& config) {
-  if (!is_backend(backend)) {
-    return {InstallStatus::UnsupportedMethod,
-            "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
-  }
+  if (static_cast<int>(backend) >= backend_count) return kNotABackend;
   detail::Installation& now = detail::installation();
   if (now.setting.backend == backend && now.setting.config == config) {
     return {InstallStatus::Done, "already installed"};

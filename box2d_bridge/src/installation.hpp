@@ -32,8 +32,8 @@ struct Setting {
   Setting(Backend b, const Config& c, std::uint8_t install_epoch)
       : backend(b),
         config(c),
-        method(info(b).entry == Entry::PerPair ? std::optional<Method>(b) : std::nullopt),
-        internal_edges(c.internal_edges && info(b).internal_edges()),
+        method(method_of(b)),
+        internal_edges(c.internal_edges && method && info(*method).internal_edges()),
         epoch(install_epoch) {}
 };
 

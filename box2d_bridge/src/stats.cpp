@@ -10,7 +10,7 @@ namespace {
 
 // Adds `from`'s counts to `to`.
 void add_to(Stats& to, const ThreadCounters& from) {
-  for (int m = 0; m < method_count; ++m) to.triangle_pairs[m] += from.triangle_pairs[m].get();
+  for (int m = 0; m < backend_count; ++m) to.triangle_pairs[m] += from.triangle_pairs[m].get();
   to.polygon_pairs += from.polygon_pairs.get();
   to.manifolds += from.manifolds.get();
   to.fallbacks += from.fallbacks.get();

@@ -29,7 +29,7 @@ class Counter {
 
 // `Stats`, field for field, as counters.
 struct ThreadCounters {
-  std::array<Counter, method_count> triangle_pairs;
+  std::array<Counter, backend_count> triangle_pairs;
   Counter polygon_pairs;
   Counter manifolds;
   Counter fallbacks;

@@ -34,7 +34,7 @@ b2Body* triangle_body(b2World& world, b2BodyType type, b2Vec2 position,
 // The world: a triangle dropped on a triangle ground (its top edge at y = 0) ends at rest with its
 // base on it, not in it and not above it (the two skins less Box2D's allowed overlap: 1.5 cm).
 bool world_rests() {
-  const dyop::box2d::InstallResult installed = dyop::box2d::install(dyop::Method::Dyop);
+  const dyop::box2d::InstallResult installed = dyop::box2d::install(dyop::box2d::Backend::Dyop);
   if (!installed.ok()) {
     std::fprintf(stderr, "install: %s\n", installed.message);
     return false;

@@ -19,12 +19,11 @@ Result<float> box2d_pair(const Triangle<float>& a, const Triangle<float>& b, con
 }  // namespace
 
 template <class T>
-PairFunction<T> pair_function(Method m) {
-  const MethodInfo& row = info(m);
-  switch (row.entry) {
-    case Entry::PerPair: return row.run<T>();
-    case Entry::Batch: return nullptr;
-    case Entry::Box2D:
+PairFunction<T> pair_function(const NarrowPhase& p) {
+  switch (call_of(p)) {
+    case Call::PerPair: return info(p.method->method).run<T>();
+    case Call::Batch: return nullptr;
+    case Call::Box2D:
 #ifdef DYOP_WITH_BOX2D
       if constexpr (std::is_same_v<T, float>) return &box2d_pair;
 #endif
@@ -33,7 +32,7 @@ PairFunction<T> pair_function(Method m) {
   return nullptr;
 }
 
-template PairFunction<float> pair_function<float>(Method);
-template PairFunction<double> pair_function<double>(Method);
+template PairFunction<float> pair_function<float>(const NarrowPhase&);
+template PairFunction<double> pair_function<double>(const NarrowPhase&);
 
 }  // namespace dyop::adapters

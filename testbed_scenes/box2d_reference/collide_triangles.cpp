@@ -44,7 +44,7 @@ Result<float> checked(Result<float> r) {
                       r.normal.allFinite() && r.witness_a.allFinite() && r.witness_b.allFinite();
   if (finite) return r;
   Result<float> invalid;
-  invalid.reason = InvalidReason::Box2DNonFinite;
+  invalid.reason = InvalidReason::ReferenceNonFinite;
   return invalid;
 }
 

@@ -84,17 +84,19 @@ void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, Ben
 
 template <class T>
 void run_precision(const BenchOptions& options, workloads::InputClass c,
-                   std::map<std::string, double>& box2d_ns, std::vector<BenchRecord>& records,
+                   std::map<workloads::InputClass, double>& box2d_ns,
+                   std::vector<BenchRecord>& records,
                    std::ostream& progress) {
   constexpr bool is_float = std::is_same_v<T, float>;
-  const char* precision = is_float ? "float" : "double";
+  const workloads::Precision precision =
+      is_float ? workloads::Precision::Float : workloads::Precision::Double;
   const int passes = options.quick ? 5 : 21;
   const workloads::PairSet<T> set = workloads::make_pair_set<T>(c, options.pairs, kSeed);
   const Reference ref = reference_of(set);
-  for (const Variant& v : bench_variants()) {
+  for (const NarrowPhase& v : bench_phases()) {
     BenchRecord base;
-    base.method = name(v);
-    base.cls = workloads::name(c);
+    base.method = v;
+    base.cls = c;
     base.precision = precision;
     base.pairs = static_cast<int>(set.size());
     bool any = false;
@@ -103,13 +105,14 @@ void run_precision(const BenchOptions& options, workloads::InputClass c,
       if (!any) measure_errors(answers(v, set), ref, base);
       any = true;
       BenchRecord rec = base;
-      rec.level = name(l);
+      rec.level = l;
       rec.ns_per_pair = time_per_pair(v, set, l, passes);
-      if (v.method == Method::Box2D) box2d_ns[rec.cls] = rec.ns_per_pair;
+      if (v == NarrowPhase::box2d()) box2d_ns[rec.cls] = rec.ns_per_pair;
       records.push_back(rec);
     }
     if (any) {
-      progress << "dyop bench: " << base.cls << " " << precision << " " << base.method << " done\n";
+      progress << "dyop bench: " << workloads::name(c) << " " << workloads::name(precision) << " "
+               << adapters::name(v) << " done\n";
     }
   }
 }
@@ -118,7 +121,7 @@ void run_precision(const BenchOptions& options, workloads::InputClass c,
 
 std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& progress) {
   std::vector<BenchRecord> records;
-  std::map<std::string, double> box2d_ns;
+  std::map<workloads::InputClass, double> box2d_ns;
   for (workloads::InputClass c : workloads::bench_classes) {
     run_precision<float>(options, c, box2d_ns, records, progress);
     run_precision<double>(options, c, box2d_ns, records, progress);

@@ -1,17 +1,22 @@
 #pragma once
 /// \file
-/// `dyop bench`'s experiment: run time against error for every runner, input class, query level and precision,
-/// with every time also given as a ratio to Box2D's `b2CollidePolygons` measured in the same run.
+/// `dyop bench`'s experiment: run time against error for every narrow phase, input class, query
+/// level and precision, with every time also given as a ratio to Box2D's `b2CollidePolygons`
+/// measured in the same run.
 ///
 /// Error is measured against the exact rational reference (`exact_reference/exact_reference.hpp`)
 /// on the pairs exactly as the precision sees them (float runs get float-rounded input), at
 /// `Level::Depth`: |depth − exact depth| relative to the pair's size (the diagonal of the union
-/// of both bounding boxes). The same error figures stand on every level's record of a runner.
+/// of both bounding boxes). The same error figures stand on every level's record of a narrow phase.
 
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "adapters/narrow_phase.hpp"
+#include "dyop/result.hpp"
+#include "workloads/input_classes.hpp"
+#include "workloads/precision.hpp"
 
 namespace dyop::experiments {
 
@@ -22,10 +27,10 @@ struct BenchOptions {
 
 /// One line of the report.
 struct BenchRecord {
-  std::string method;     ///< runner name, "batch", "box2d", "lin-canny-warm", ...
-  std::string cls;        ///< input class
-  std::string level;      ///< "overlap", "depth", "contact", "manifold"
-  std::string precision;  ///< "float" or "double"
+  adapters::NarrowPhase method;  ///< what ran (`adapters::name`: "batch", "lin-canny-warm", ...)
+  workloads::InputClass cls = workloads::InputClass::General;  ///< the pairs' class
+  Level level = Level::Depth;                                   ///< the query level timed
+  workloads::Precision precision = workloads::Precision::Float;  ///< the scalar it ran in
   int pairs = 0;          ///< pairs timed and checked
   double ns_per_pair = 0;       ///< median over the timed passes
   double ratio_vs_box2d = 0;    ///< ns_per_pair / box2d's (same class, float, manifold)
@@ -36,10 +41,10 @@ struct BenchRecord {
   double normal_err_max = 0;    ///< max angle (rad) to sat's normal on pairs both call penetrating
   double normal_err_mean = 0;   ///< mean of the same
   int misclassified = 0;        ///< penetrating vs not, against the exact sign, outside the band
-  int invalid = 0;              ///< pairs the runner answered Invalid (left out of the errors)
+  int invalid = 0;              ///< pairs it answered Invalid (left out of the errors)
 };
 
-/// Runs everything; one progress line per runner and class on `progress`.
+/// Runs everything; one progress line per narrow phase and class on `progress`.
 std::vector<BenchRecord> run_bench(const BenchOptions& options, std::ostream& progress);
 
 }  // namespace dyop::experiments

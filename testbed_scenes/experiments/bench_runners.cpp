@@ -15,8 +15,9 @@
 
 namespace dyop::experiments {
 
+using adapters::Call;
 using adapters::pair_function;
-using adapters::runs_pairs;
+
 namespace {
 
 // Keeps results alive without storing them: the compiler cannot drop a call whose result feeds
@@ -63,27 +64,21 @@ workloads::BatchArrays<T> batch_arrays(const workloads::PairSet<T>& s) {
 
 }  // namespace
 
-std::vector<Variant> bench_variants() {
-  return variants([](const MethodInfo& row) {
-    return !row.needs_box2d() || runs_pairs<float>(row.method);  // Box2D in builds with it
-  });
-}
+std::vector<NarrowPhase> bench_phases() { return adapters::narrow_phases(nullptr, true); }
 
-bool supports(const Variant& v, Level level, bool is_float) {
-  const MethodInfo& row = info(v.method);
-  return row.has(level) && (is_float || row.runs_double()) &&
-         (!row.needs_box2d() || runs_pairs<float>(v.method));
+bool supports(const NarrowPhase& p, Level level, bool is_float) {
+  return has(p, level) && (is_float || runs_double(p)) && built(p);
 }
 
 template <class T>
-std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& set) {
+std::vector<Answer<T>> answers(const NarrowPhase& p, const workloads::PairSet<T>& set) {
   std::vector<Answer<T>> out(set.size());
   auto keep = [&](std::size_t k, const auto& res) {
     out[k].status = res.status;
     out[k].separation = static_cast<T>(res.separation);
     out[k].normal = res.normal.template cast<T>();
   };
-  if (info(v.method).entry == Entry::Batch) {
+  if (call_of(p) == Call::Batch) {
     workloads::BatchArrays<T> o = batch_arrays(set);
     penetrate_batch(o.pairs(), Level::Depth, o.out());
     for (std::size_t k = 0; k < set.size(); ++k) {
@@ -91,23 +86,25 @@ std::vector<Answer<T>> answers(const Variant& v, const workloads::PairSet<T>& se
     }
     return out;
   }
-  const PairFunction<T> run = pair_function<T>(v.method);
+  const PairFunction<T> run = pair_function<T>(p);
   if (run == nullptr) return out;
+  const bool warm = p.method && p.method->warm;
   for (std::size_t k = 0; k < set.size(); ++k) {
     PairState cache;
-    if (v.warm) run(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
+    if (warm) run(set.a[k], set.b_next[k], Query<T>{}, &cache);  // the previous frame
     keep(k, run(set.a[k], set.b[k], Query<T>{}, &cache));
   }
   return out;
 }
 
 template <class T>
-double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level level,
+double time_per_pair(const NarrowPhase& p, const workloads::PairSet<T>& set, Level level,
                      int passes) {
   const std::size_t n = set.size();
   const Query<T> q{level};
-  switch (info(v.method).entry) {
-    case Entry::PerPair: {
+  switch (call_of(p)) {
+    case Call::PerPair: {
+      const Variant v = *p.method;
       if (!v.warm) {
         return median_ns(n, passes, [&](int) {
           double sink = 0;
@@ -129,7 +126,7 @@ double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level l
         return sink;
       });
     }
-    case Entry::Batch: {
+    case Call::Batch: {
       workloads::BatchArrays<T> o = batch_arrays(set);
       const PairBatch<T> batch = o.pairs();
       const BatchOutput<T> view = o.out();
@@ -138,7 +135,7 @@ double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level l
         return static_cast<double>(o.status[n / 2]);
       });
     }
-    case Entry::Box2D:
+    case Call::Box2D:
 #ifdef DYOP_WITH_BOX2D
       if constexpr (std::is_same_v<T, float>) {
         const workloads::Box2DPairSet s = workloads::make_box2d_pair_set(set);
@@ -158,9 +155,11 @@ double time_per_pair(const Variant& v, const workloads::PairSet<T>& set, Level l
   return 0;
 }
 
-template std::vector<Answer<float>> answers(const Variant&, const workloads::PairSet<float>&);
-template std::vector<Answer<double>> answers(const Variant&, const workloads::PairSet<double>&);
-template double time_per_pair(const Variant&, const workloads::PairSet<float>&, Level, int);
-template double time_per_pair(const Variant&, const workloads::PairSet<double>&, Level, int);
+template std::vector<Answer<float>> answers(const NarrowPhase&,
+                                            const workloads::PairSet<float>&);
+template std::vector<Answer<double>> answers(const NarrowPhase&,
+                                             const workloads::PairSet<double>&);
+template double time_per_pair(const NarrowPhase&, const workloads::PairSet<float>&, Level, int);
+template double time_per_pair(const NarrowPhase&, const workloads::PairSet<double>&, Level, int);
 
 }  // namespace dyop::experiments

@@ -14,8 +14,12 @@ using namespace scenes::paper;  // the scene's triangles, paths, frames and timi
 using scenes::ErrorTally;
 using scenes::median;
 
-std::vector<Variant> experiment_methods() {
-  return variants([](const MethodInfo& row) { return adapters::runs_pairs<float>(row.method); });
+std::vector<adapters::NarrowPhase> experiment_methods() {
+  std::vector<adapters::NarrowPhase> out;
+  for (const adapters::NarrowPhase& p : adapters::narrow_phases(nullptr, true)) {
+    if (adapters::runs_pairs<float>(p)) out.push_back(p);
+  }
+  return out;
 }
 
 
@@ -46,7 +50,7 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   e.pairs_tested = overlapping.size();
   for (int k = 0; k < type_count; ++k) e.pairs_per_type[k] = per_type[k].size();
 
-  const std::vector<Variant> methods = experiment_methods();
+  const std::vector<adapters::NarrowPhase> methods = experiment_methods();
   const int n_methods = static_cast<int>(methods.size());
   std::vector<std::array<std::vector<double>, type_count>> type_us(methods.size());
   std::vector<std::vector<double>> total_us(methods.size()), all_us(methods.size());
@@ -55,7 +59,7 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   for (int rep = 0; rep < repetitions; ++rep) {
     for (int n = 0; n < n_methods; ++n) {
       const int m = (n + rep) % n_methods;  // a different method first each repetition
-      const PairCall call = call_of(methods[m]);
+      const PairCall call = pair_call(methods[m]);
       for (int k = 0; k < type_count; ++k) {
         type_us[m][k].push_back(time_jobs(per_type[k], call, caches, cold));
       }
@@ -77,7 +81,7 @@ Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
     f.us_total = median(total_us[m]);
     f.us_all_pairs = median(all_us[m]);
     f.ns_per_pair = e.pairs_tested > 0 ? f.us_total * 1e3 / static_cast<double>(e.pairs_tested) : 0;
-    const PairCall call = call_of(f.method);
+    const PairCall call = pair_call(f.method);
     caches = cold;
     ErrorTally tally;
     for (std::size_t n = 0; n < overlapping.size(); ++n) {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dyop/method.hpp"
+#include "adapters/narrow_phase.hpp"
 #include "scenes/paper.hpp"
 
 namespace dyop::experiments::paper {
@@ -16,16 +16,16 @@ namespace dyop::experiments::paper {
 using scenes::paper::experiment_steps;
 using scenes::paper::type_count;
 
-/// The methods of the experiment, in registry order (`dyop/method.hpp`): every row that answers
-/// single pairs in float in this build (`adapters::pair_function`), Lin–Canny both cold and
-/// warm-started (a cache per pair kept from step to step, as the Box2D plug-in keeps one per
-/// contact); Box2D's `b2CollidePolygons` through `box2d::collide_triangles`.
-std::vector<Variant> experiment_methods();
+/// The narrow phases of the experiment, in registry order (`dyop/method.hpp`): every row that
+/// answers single pairs in float (`adapters::pair_function`), Lin–Canny both cold and
+/// warm-started (a state per pair kept from step to step, as the Box2D plug-in keeps one per
+/// contact); then Box2D's `b2CollidePolygons` through `box2d::collide_triangles`.
+std::vector<adapters::NarrowPhase> experiment_methods();
 
 /// One method's figures. Times are medians over the repetitions, in microseconds for the whole
 /// run (all steps), as the paper gives milliseconds "for all 90 simulation steps".
 struct MethodFigures {
-  Variant method;  ///< the method, cold or warm
+  adapters::NarrowPhase method;  ///< the method, cold or warm, or Box2D's
   /// Per type: the time of every bounding-box-overlapping pair the type is in, over all steps
   /// (each pair counts for both its types, as each triangle is tested against the others).
   std::array<double, type_count> us_per_type{};

@@ -124,13 +124,12 @@ Category prepare(InputClass c, Precision precision, const StressOptions& o) {
 }
 
 template <class T>
-StressRecord measure(Method r, InputClass c, const Category& cat) {
+StressRecord measure(const adapters::NarrowPhase& r, InputClass c, const Category& cat) {
   const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
   StressRecord rec;
-  rec.runner = r;
-  rec.method = variant_name(r, false);  // every pair is answered from no state
-  rec.cls = workloads::name(c);
-  rec.precision = workloads::name(precision);
+  rec.method = r;
+  rec.cls = c;
+  rec.precision = precision;
   const std::size_t n = cat.pairs[0].size();
   rec.pairs = static_cast<int>(n);
   std::vector<StressAnswer> answers[kVariants];
@@ -153,9 +152,9 @@ StressRecord measure(Method r, InputClass c, const Category& cat) {
     }
     const StressAnswer& a = answers[0][k];
     if (a.status == Status::Invalid) {
-      if (r == Method::DyopPaper) {
+      if (r == adapters::NarrowPhase::of(Method::DyopPaper)) {
         ++rec.invalid_by_design;
-      } else if (info(r).entry != Entry::Batch) {  // batch rows are judged by their verdict above
+      } else if (adapters::call_of(r) != adapters::Call::Batch) {  // batch rows: their verdict
         ++rec.invalid;
       }
       continue;
@@ -199,8 +198,9 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
     const auto start = std::chrono::steady_clock::now();
     const Category cat = prepare<T>(c, precision, o);
     int rejected = 0;
-    for (const MethodInfo& row : method_table) {
-      const Method r = row.method;
+    // Every narrow phase once, from no state (a warm-startable method's cold variant).
+    for (const adapters::NarrowPhase& r : adapters::narrow_phases(nullptr, true)) {
+      if (r.method && r.method->warm) continue;
       if (!experiments::stress_runs(r, is_float)) continue;
       records.push_back(measure<T>(r, c, cat));
       rejected = records.back().rejected;
@@ -217,9 +217,13 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
 
 double exact_bound(Precision p) { return p == Precision::Float ? 1e-5 : 1e-12; }
 
-bool promises_exact(Method m) { return info(m).accuracy == Accuracy::Exact; }
+bool promises_exact(const adapters::NarrowPhase& p) {
+  return adapters::accuracy(p) == Accuracy::Exact;
+}
 
-bool promises_invariance(Method m) { return info(m).invariant(); }
+bool promises_invariance(const adapters::NarrowPhase& p) {
+  return p.method && info(p.method->method).invariant();  // Box2D's tolerances are absolute
+}
 
 const char* name(Invariance i) {
   switch (i) {
@@ -241,10 +245,10 @@ std::vector<StressRecord> run_stress(const StressOptions& options, std::ostream&
 std::vector<std::string> broken_promises(const std::vector<StressRecord>& records) {
   std::vector<std::string> out;
   for (const StressRecord& r : records) {
-    const std::string what = r.method + " " + r.precision + " " + r.cls + ": ";
-    const Method runner = r.runner;
-    const double bound =
-        exact_bound(r.precision == "float" ? Precision::Float : Precision::Double);
+    const std::string what = std::string(adapters::name(r.method)) + " " +
+                             workloads::name(r.precision) + " " + workloads::name(r.cls) + ": ";
+    const adapters::NarrowPhase& runner = r.method;
+    const double bound = exact_bound(r.precision);
     if (promises_exact(runner) && r.err_max > bound) {
       out.push_back(what + "max error " + fmt("%.3g", r.err_max) + " of the pair's size exceeds " +
                     fmt("%.0e", bound));
@@ -260,7 +264,7 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
         }
       }
     }
-    if (r.nonfinite > 0 && !info(runner).needs_box2d()) {
+    if (r.nonfinite > 0 && adapters::call_of(runner) != adapters::Call::Box2D) {
       out.push_back(what + std::to_string(r.nonfinite) + " NaN or inf answers");
     }
     if (r.invalid > 0) {

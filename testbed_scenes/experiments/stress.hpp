@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// `dyop stress`'s experiment: numerical stability on hostile input, as figures per runner, input category
-/// and precision.
+/// `dyop stress`'s experiment: numerical stability on hostile input, as figures per narrow
+/// phase, input category and precision.
 ///
 /// Every figure is measured against the exact rational reference
 /// (`exact_reference/exact_reference.hpp`) on the pairs exactly as the precision sees them (float
@@ -37,16 +37,16 @@ struct StressOptions {
 /// far below the error of a wrong axis or feature. Also the tolerance of an invariance check.
 double exact_bound(workloads::Precision p);
 
-/// `m` promises the exact answer (error within `exact_bound`, no misclassification): the
+/// `p` promises the exact answer (error within `exact_bound`, no misclassification): the
 /// registry's `Accuracy::Exact` rows (sat, dyop and the batch kernel, sat's arithmetic).
-bool promises_exact(Method m);
+bool promises_exact(const adapters::NarrowPhase& p);
 
-/// `m` promises invariance under motion, reordering and swapping: the registry's invariant rows
+/// `p` promises invariance under motion, reordering and swapping: the registry's invariant rows
 /// (`MethodInfo::invariant`: sat, dyop, epa, batch).
 /// dyop-fast's pivot comes from axis-aligned boxes, dyop-paper's eq. 8 divides by a distance
 /// from the origin, and Lin–Canny ends in a local minimum that depends on where its walk starts:
 /// their violations are figures, not failures.
-bool promises_invariance(Method m);
+bool promises_invariance(const adapters::NarrowPhase& p);
 
 /// The invariance checks, in the order of `StressRecord::invariance`.
 enum class Invariance : std::uint8_t { Translation, Rotation, Reorder, Swap };
@@ -54,13 +54,12 @@ inline constexpr int invariance_count = 4;
 /// "translation", "rotation", "reorder", "swap".
 const char* name(Invariance i);
 
-/// One runner on one category in one precision.
+/// One narrow phase on one category in one precision.
 struct StressRecord {
-  Method runner = Method::Dyop;  ///< what ran
-  std::string method;            ///< `variant_name(runner, false)`: every run is cold
-  std::string cls;               ///< category (`workloads::name(InputClass)`)
-  std::string precision;  ///< "double" or "float"
-  int pairs = 0;          ///< pairs generated
+  adapters::NarrowPhase method;  ///< what ran; every run is cold (`adapters::name`)
+  workloads::InputClass cls = workloads::InputClass::General;  ///< the category
+  workloads::Precision precision = workloads::Precision::Double;  ///< the scalar it ran in
+  int pairs = 0;                                                   ///< pairs generated
   /// Pairs with a triangle that `Triangle<T>::make` rejects (degenerate, too large, ...): each
   /// gets a clear error and is not run; not a failure.
   int rejected = 0;
@@ -78,7 +77,7 @@ struct StressRecord {
   std::string worst_pair;
 };
 
-/// Runs every runner on every category in the precisions asked for; one progress line per
+/// Runs every narrow phase on every category in the precisions asked for; one progress line per
 /// precision and category on `progress`.
 std::vector<StressRecord> run_stress(const StressOptions& options, std::ostream& progress);
 

@@ -26,13 +26,14 @@ StressAnswer answer_of(const Result<T>& r, bool finite) {
   return a;
 }
 
-// A row that answers single pairs. Box2D's answer has `Level::Contact`'s fields whatever the
-// query asks, and no manifold of the library's kind to check.
+// A narrow phase that answers single pairs. Box2D's answer has `Level::Contact`'s fields
+// whatever the query asks, and no manifold of the library's kind to check.
 template <class T>
-std::vector<StressAnswer> pair_answers(Method m, const std::vector<workloads::RawPair>& pairs,
+std::vector<StressAnswer> pair_answers(const adapters::NarrowPhase& p,
+                                       const std::vector<workloads::RawPair>& pairs,
                                        bool with_manifold) {
-  const PairFunction<T> run = pair_function<T>(m);
-  const bool box2d = info(m).needs_box2d();
+  const PairFunction<T> run = pair_function<T>(p);
+  const bool box2d = adapters::call_of(p) == adapters::Call::Box2D;
   std::vector<StressAnswer> out(pairs.size());
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto t = workloads::build<T>(pairs[k]);
@@ -84,22 +85,25 @@ std::vector<StressAnswer> batch_answers(const std::vector<workloads::RawPair>& p
 
 }  // namespace
 
-bool stress_runs(Method m, bool is_float) {
-  return info(m).entry == Entry::Batch ||
-         (is_float ? runs_pairs<float>(m) : runs_pairs<double>(m));
+bool stress_runs(const adapters::NarrowPhase& p, bool is_float) {
+  return adapters::call_of(p) == adapters::Call::Batch ||
+         (is_float ? runs_pairs<float>(p) : runs_pairs<double>(p));
 }
 
 template <class T>
-std::vector<StressAnswer> stress_answers(Method m, const std::vector<workloads::RawPair>& pairs,
+std::vector<StressAnswer> stress_answers(const adapters::NarrowPhase& p,
+                                         const std::vector<workloads::RawPair>& pairs,
                                          bool with_manifold) {
-  if (info(m).entry == Entry::Batch) return batch_answers<T>(pairs);
-  if (!runs_pairs<T>(m)) return std::vector<StressAnswer>(pairs.size());
-  return pair_answers<T>(m, pairs, with_manifold);
+  if (adapters::call_of(p) == adapters::Call::Batch) return batch_answers<T>(pairs);
+  if (!runs_pairs<T>(p)) return std::vector<StressAnswer>(pairs.size());
+  return pair_answers<T>(p, pairs, with_manifold);
 }
 
-template std::vector<StressAnswer> stress_answers<float>(Method,
-                                                         const std::vector<workloads::RawPair>&, bool);
-template std::vector<StressAnswer> stress_answers<double>(Method,
-                                                          const std::vector<workloads::RawPair>&, bool);
+template std::vector<StressAnswer> stress_answers<float>(const adapters::NarrowPhase&,
+                                                         const std::vector<workloads::RawPair>&,
+                                                         bool);
+template std::vector<StressAnswer> stress_answers<double>(const adapters::NarrowPhase&,
+                                                          const std::vector<workloads::RawPair>&,
+                                                          bool);
 
 }  // namespace dyop::experiments

@@ -9,13 +9,14 @@
 
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
+#include "adapters/narrow_phase.hpp"
 #include "workloads/raw_pair.hpp"
 
 namespace dyop::experiments {
 
-/// Whether `m` runs in this precision in this build: Box2D in float only, and only when built
-/// with Box2D; every other row in both.
-bool stress_runs(Method m, bool is_float);
+/// Whether `p` runs in this precision in this build: Box2D in float only, and only when built
+/// with Box2D; every method of the library in both.
+bool stress_runs(const adapters::NarrowPhase& p, bool is_float);
 
 /// One pair's answer at `Level::Depth`, with what the stress figures need of the rest.
 struct StressAnswer {
@@ -32,16 +33,17 @@ struct StressAnswer {
   bool verdict_mismatch = false;
 };
 
-/// The answers of `m` on `pairs` (world coordinates as given, exactly representable in T),
+/// The answers of `p` on `pairs` (world coordinates as given, exactly representable in T),
 /// one per pair in order. `with_manifold` adds the `Level::Manifold` query to the finiteness
 /// check (the per-pair methods; Lin–Canny then runs warm from its Depth query's cache).
 template <class T>
-std::vector<StressAnswer> stress_answers(Method m, const std::vector<workloads::RawPair>& pairs,
+std::vector<StressAnswer> stress_answers(const adapters::NarrowPhase& p,
+                                         const std::vector<workloads::RawPair>& pairs,
                                          bool with_manifold);
 
 extern template std::vector<StressAnswer> stress_answers<float>(
-    Method, const std::vector<workloads::RawPair>&, bool);
+    const adapters::NarrowPhase&, const std::vector<workloads::RawPair>&, bool);
 extern template std::vector<StressAnswer> stress_answers<double>(
-    Method, const std::vector<workloads::RawPair>&, bool);
+    const adapters::NarrowPhase&, const std::vector<workloads::RawPair>&, bool);
 
 }  // namespace dyop::experiments

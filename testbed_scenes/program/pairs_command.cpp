@@ -106,7 +106,8 @@ struct PairsArgs {
 
 int run(const PairsArgs& args) {
   PairsOptions options;
-  const std::optional<Method> chosen = parse_method(args.method);  // nothing: "all"
+  const std::optional<adapters::NarrowPhase> chosen =
+      adapters::parse_narrow_phase(args.method);  // nothing: "all"
   for (const PairMethod& b : pairs_methods()) {
     if (!chosen || b.method == *chosen) options.methods.push_back(b);
   }

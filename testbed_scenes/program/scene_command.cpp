@@ -64,7 +64,7 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
 
 int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& err) {
   const SceneInfo* info = find_scene(c.scene);
-  const std::optional<box2d::Backend> backend = parse_method(c.backend, box2d::is_backend);
+  const std::optional<box2d::Backend> backend = box2d::parse_backend(c.backend);
   const bool own = c.backend == box2d_own;
   if (info == nullptr || !(backend || own)) {
     err << "dyop scene: unknown "

@@ -50,8 +50,8 @@ Records bench_records(const std::vector<BenchRecord>& records) {
                {"misclassified", "misclassified", "miscl", 6},
                {"invalid", "invalid", "inval", 5}});
   for (const BenchRecord& r : records) {
-    out.add({Value::text(r.method), Value::text(r.cls), Value::text(r.level),
-             Value::text(r.precision), Value::count(r.pairs), Value::number(r.ns_per_pair, "%.1f"),
+    out.add({Value::text(adapters::name(r.method)), Value::text(workloads::name(r.cls)),
+             Value::text(name(r.level)), Value::text(workloads::name(r.precision)), Value::count(r.pairs), Value::number(r.ns_per_pair, "%.1f"),
              Value::number(r.ratio_vs_box2d, "%.3f"), Value::number(r.err_max, "%.2e"),
              Value::number(r.err_mean, "%.2e"), Value::number(r.err_p99, "%.2e"),
              Value::number(r.exact_fraction, "%.3f"),
@@ -73,14 +73,14 @@ void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir
   // float; errors at or below 1e-17 are drawn at 1e-17 ("exact": a log axis has no zero).
   std::vector<const BenchRecord*> points;
   for (const BenchRecord& r : records) {
-    if (r.cls == "overlapping" && r.precision == "float" &&
-        (r.level == "depth" || r.method == "box2d")) {
+    if (r.cls == workloads::InputClass::Overlapping && r.precision == workloads::Precision::Float &&
+        (r.level == Level::Depth || r.method == adapters::NarrowPhase::box2d())) {
       points.push_back(&r);
     }
   }
   auto write_points = [](std::ostream& o, const std::vector<const BenchRecord*>& which) {
     for (const BenchRecord* p : which) {
-      write_data_line(o, p->method, {p->ns_per_pair, std::max(p->err_max, 1e-17)});
+      write_data_line(o, adapters::name(p->method), {p->ns_per_pair, std::max(p->err_max, 1e-17)});
     }
   };
   dir.write("time_vs_error.dat", [&](std::ostream& o) {

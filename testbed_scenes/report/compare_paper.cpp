@@ -106,13 +106,13 @@ class PaperSection : public CompareSection {
            "triangle type is in, over all "
         << e.steps << " steps (µs, median of " << e.repetitions << " repetitions):\n\n"
         << "| type | size | pairs |";
-    for (const auto& m : e.methods) out << ' ' << name(m.method) << " |";
+    for (const auto& m : e.methods) out << ' ' << adapters::name(m.method) << " |";
     out << " lin-canny-warm / dyop | lin-canny-cold / dyop |\n|--:|--:|--:|";
     for (std::size_t i = 0; i < e.methods.size() + 2; ++i) out << "--:|";
     out << '\n';
     auto figures = [&](const Variant& which) -> const experiments::paper::MethodFigures& {
       for (const auto& m : e.methods) {
-        if (m.method == which) return m;
+        if (m.method == adapters::NarrowPhase{which}) return m;
       }
       return e.methods.front();
     };
@@ -136,7 +136,7 @@ class PaperSection : public CompareSection {
            "| depth error max | depth error mean | misclassified | invalid |\n"
         << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
     for (const auto& m : e.methods) {
-      out << "| " << name(m.method) << " | " << fmt("%.1f", m.us_total) << " | "
+      out << "| " << adapters::name(m.method) << " | " << fmt("%.1f", m.us_total) << " | "
           << fmt("%.1f", m.ns_per_pair) << " | " << fmt("%.2f", m.us_total / dyop.us_total) << " | "
           << fmt("%.1f", m.us_all_pairs) << " | " << fmt("%.2f", m.us_all_pairs / dyop.us_all_pairs)
           << " | " << metres(m.error_max) << " | " << metres(m.error_mean) << " | " << m.misclassified
@@ -155,7 +155,7 @@ class PaperSection : public CompareSection {
   void figure7_data(std::ostream& o, char sep) const {
     const experiments::paper::Experiment& e = *experiment_;
     o << "type" << sep << "size" << sep << "pairs";
-    for (const auto& m : e.methods) o << sep << name(m.method);
+    for (const auto& m : e.methods) o << sep << adapters::name(m.method);
     o << '\n';
     for (int k = 0; k < scenes::paper::type_count; ++k) {
       const auto& t = scenes::paper::triangle_types()[k];
@@ -172,7 +172,7 @@ class PaperSection : public CompareSection {
     o << "method,us_overlapping_pairs,ns_per_pair,us_all_pairs,error_max,error_mean,"
          "misclassified,invalid,pairs_tested,pairs_penetrating,steps,repetitions\n";
     for (const auto& m : e.methods) {
-      o << name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
+      o << adapters::name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
         << fmt("%.6g", m.ns_per_pair) << ',' << fmt("%.6g", m.us_all_pairs) << ','
         << fmt("%.6g", m.error_max) << ',' << fmt("%.6g", m.error_mean) << ',' << m.misclassified
         << ',' << m.invalid << ',' << e.pairs_tested << ',' << e.pairs_penetrating << ',' << e.steps

@@ -34,8 +34,9 @@ Records stress_records(const std::vector<StressRecord>& records) {
   columns.push_back({"worst_pair", "worst pair", "", 0, where::json});
   Records out(std::move(columns));
   for (const StressRecord& r : records) {
-    std::vector<Value> row = {Value::text(r.precision),     Value::text(r.cls),
-                              Value::text(r.method),        Value::count(r.pairs),
+    std::vector<Value> row = {Value::text(workloads::name(r.precision)),
+                              Value::text(workloads::name(r.cls)),
+                              Value::text(adapters::name(r.method)), Value::count(r.pairs),
                               Value::count(r.rejected),     Value::number(r.err_max, "%.2e"),
                               Value::number(r.err_p99, "%.2e"), Value::count(r.nonfinite),
                               Value::count(r.misclassified)};
@@ -51,13 +52,15 @@ Records stress_records(const std::vector<StressRecord>& records) {
 void write_markdown(const std::vector<StressRecord>& records, std::ostream& out) {
   std::vector<std::string> classes;
   for (InputClass c : workloads::stress_classes) classes.push_back(workloads::name(c));
-  for (const char* precision : {"double", "float"}) {
+  for (const workloads::Precision p : {workloads::Precision::Double, workloads::Precision::Float}) {
+    const char* precision = workloads::name(p);
     std::map<std::string, std::map<std::string, const StressRecord*>> by_method;
     std::vector<std::string> methods;
     for (const StressRecord& r : records) {
-      if (r.precision != precision) continue;
-      if (by_method.find(r.method) == by_method.end()) methods.push_back(r.method);
-      by_method[r.method][r.cls] = &r;
+      if (r.precision != p) continue;
+      const std::string method = adapters::name(r.method);
+      if (by_method.find(method) == by_method.end()) methods.push_back(method);
+      by_method[method][workloads::name(r.cls)] = &r;
     }
     if (methods.empty()) continue;
     out << "\nMax (99th percentile) |separation error| / pair size, " << precision << ":\n\n| method |";

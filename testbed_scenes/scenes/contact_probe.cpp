@@ -8,6 +8,7 @@
 
 #include "dyop/sat.hpp"
 #include "adapters/pair_function.hpp"
+#include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 
 namespace dyop::scenes {
@@ -94,7 +95,7 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     }
     // The backend's depth, in float as the plug-in computes it (Lin–Canny warm-started from the
     // pair's cache; Box2D: the deepest point of its manifold).
-    const Result<float> r = adapters::pair_function<float>(backend_)(
+    const Result<float> r = adapters::pair_function<float>(narrow_phase_of(backend_))(
         ta.triangle, tb.triangle, Query<float>{Level::Depth}, &cache.cache);
     auto widen = [](const Triangle<float>& t) {
       return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),

@@ -74,10 +74,6 @@ struct Frame {
 };
 Frame frame_at(double t);
 
-/// The experiment's method behind a Box2D backend: warm where the method keeps state, as in the
-/// plug-in.
-Variant variant_of(box2d::Backend backend);
-
 /// `paper` under one backend, step by step, for `dyop scene paper`: each step times the
 /// backend once over that step's pairs (steady_clock around the calls; repeating a step's few
 /// pairs would let the branch predictor learn them) and checks it against the exact reference.

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "adapters/pair_function.hpp"
+
 namespace dyop::scenes::paper {
 namespace {
 
@@ -11,6 +13,10 @@ namespace {
 volatile double g_sink = 0;
 
 }  // namespace
+
+PairCall pair_call(const adapters::NarrowPhase& p) {
+  return {adapters::pair_function<float>(p), p.method && p.method->warm};
+}
 
 int pair_index(int i, int j) {
   return i * (2 * type_count - i - 1) / 2 + (j - i - 1);

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "dyop/lin_canny.hpp"
+#include "adapters/narrow_phase.hpp"
 #include "dyop/method.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "scenes/paper.hpp"
@@ -25,8 +25,8 @@ struct PairCall {
   }
 };
 
-/// `v`'s call (paper_methods.cpp).
-PairCall call_of(const Variant& v);
+/// `p`'s call.
+PairCall pair_call(const adapters::NarrowPhase& p);
 
 /// The index of the pair of types `i` < `j`, in 0 … `pair_count` - 1.
 int pair_index(int i, int j);

@@ -67,9 +67,9 @@ TEST(Catalogue, HasEveryScene) {
   EXPECT_EQ(find_scene("nope"), nullptr);
   EXPECT_THROW(make_scene("nope", box2d::Backend::Dyop, 0), std::invalid_argument);
   for (box2d::Backend b : box2d::all_backends) {
-    EXPECT_EQ(parse_method(box2d::name(b), box2d::is_backend), b);
+    EXPECT_EQ(box2d::parse_backend(box2d::name(b)), b);
   }
-  EXPECT_FALSE(parse_method("dyop-paper", box2d::is_backend).has_value());
+  EXPECT_FALSE(box2d::parse_backend("dyop-paper").has_value());
 }
 
 // The sizes the issue asks for, counted in the built worlds.

@@ -48,6 +48,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
@@ -55,28 +56,78 @@
 
 namespace dyop::box2d {
 
-/// The narrow phase a triangle pair goes to: a method of the registry (`dyop/method.hpp`) whose
-/// row is `box2d_backend` — every method of the library but `DyopPaper` (kept for reproducing the
-/// paper, not for simulation) and `Batch` (many pairs per call), and `Method::Box2D`
-/// (`b2CollidePolygons`, Box2D's own answer through the same path, for comparison).
-using Backend = Method;
+/// The narrow phase a triangle pair goes to: one of the library's methods fit for simulation
+/// (the registry's `MethodInfo::simulation()` rows: every method but `DyopPaper`, kept for
+/// reproducing the paper, and `Batch`, many pairs per call), in the registry's order, then
+/// `Box2D`: Box2D's own `b2CollidePolygons` through the same path, for comparison.
+enum class Backend : std::uint8_t {
+  Dyop,      ///< `dyop`: DyOP-PD, exact (`Method::Dyop`)
+  DyopFast,  ///< `dyop-fast`: the pivot heuristic alone (`Method::DyopFast`)
+  LinCanny,  ///< `lin-canny`: closest features, warm-started per contact (`Method::LinCanny`)
+  Sat,       ///< `sat`: the exact reference (`Method::Sat`)
+  Epa,       ///< `epa`: GJK + EPA (`Method::Epa`)
+  Box2D,     ///< `box2d`: Box2D 2.4's `b2CollidePolygons`, the production reference
+};
 
-/// True for the registry's rows the plug-in offers (`MethodInfo::box2d_backend()`): the filter of
-/// `all_backends`, and of `parse_method` for a backend's name.
-constexpr bool is_backend(const MethodInfo& row) { return row.box2d_backend(); }
+/// Number of backends: the size of arrays indexed by `static_cast<int>(Backend)`.
+inline constexpr int backend_count = 6;
 
-/// Every backend, in registry order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
-inline constexpr auto all_backends =
-    dyop::detail::select_methods<dyop::detail::count_methods(is_backend)>(is_backend);
+/// Every backend, in `Backend` order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
+inline constexpr std::array<Backend, backend_count> all_backends = {
+    Backend::Dyop, Backend::DyopFast, Backend::LinCanny, Backend::Sat, Backend::Epa,
+    Backend::Box2D};
 
-/// Number of backends.
-inline constexpr int backend_count = static_cast<int>(all_backends.size());
+namespace detail {
 
-/// True when the plug-in offers `m` (`info(m).box2d_backend()`).
-constexpr bool is_backend(Method m) { return info(m).box2d_backend(); }
+// The library's method of each backend, in `Backend` order; `Box2D` has none.
+inline constexpr std::optional<Method> backend_methods[backend_count] = {
+    Method::Dyop, Method::DyopFast, Method::LinCanny, Method::Sat, Method::Epa, std::nullopt};
 
-/// A backend's spelling is its method's (`dyop::name`).
-using dyop::name;
+// The backends are exactly the registry's simulation rows, in its order.
+constexpr bool backends_are_the_simulation_rows() {
+  int k = 0;
+  for (const MethodInfo& row : method_table) {
+    if (!row.simulation()) continue;
+    if (k >= backend_count || backend_methods[k] != row.method) return false;
+    ++k;
+  }
+  return k == backend_count - 1 && !backend_methods[k];
+}
+static_assert(backends_are_the_simulation_rows(),
+              "Backend must list the registry's simulation rows in order, then Box2D");
+
+}  // namespace detail
+
+/// The library's method behind `backend`; nothing for `Backend::Box2D`, Box2D's own code.
+constexpr std::optional<Method> method_of(Backend backend) {
+  return detail::backend_methods[static_cast<int>(backend)];
+}
+
+/// The backend that runs method `m`; nothing when the plug-in does not offer it (`DyopPaper`,
+/// `Batch`).
+constexpr std::optional<Backend> backend_of(Method m) {
+  for (Backend b : all_backends) {
+    if (method_of(b) == m) return b;
+  }
+  return std::nullopt;
+}
+
+/// A backend's one spelling: its method's name (`dyop::name`), or "box2d".
+constexpr const char* name(Backend backend) {
+  const std::optional<Method> m = method_of(backend);
+  return m ? dyop::name(*m) : "box2d";
+}
+
+/// True when the backend keeps warm-start state per contact (`MethodInfo::warm_start()`:
+/// `LinCanny`).
+constexpr bool warm_start(Backend backend) {
+  const std::optional<Method> m = method_of(backend);
+  return m && info(*m).warm_start();
+}
+
+/// The backend spelt `s` (its `name`), or nothing: the registry's parser (`parse_method`) over the
+/// simulation rows, and "box2d".
+std::optional<Backend> parse_backend(std::string_view s);
 
 /// B's face becomes the reference only when its separation beats A's best by more than this
 /// (metres). Why this value: it is `b2CollidePolygons`' own `k_tol`, so the reference face flips
@@ -86,7 +137,7 @@ inline constexpr float face_hysteresis = 0.1f * b2_linearSlop;
 /// How an `install` or `uninstall` went.
 enum class InstallStatus : std::uint8_t {
   Done,               ///< the requested backend (or Box2D's own contact) is now registered
-  UnsupportedMethod,  ///< refused: the method is not offered to Box2D (`is_backend` is false)
+  UnsupportedMethod,  ///< refused: not a backend (`install(Method)` of a method not offered)
 };
 
 /// The outcome of `install` / `uninstall`, returned by value.
@@ -220,10 +271,13 @@ struct ContactMemory {
 ///   on; after `uninstall` it answers with `b2CollidePolygons`, exactly as Box2D's own contact.
 /// - Contacts Box2D's own code made before the install keep Box2D's answer until they end (when
 ///   the two fixtures' fat AABBs stop overlapping): Box2D offers no way to replace a live contact.
-/// Installing the installed backend with the same skips does nothing and succeeds. A method
-/// that is not a backend (`DyopPaper`, `Batch`) is refused (`UnsupportedMethod`) and changes
-/// nothing.
+/// Installing the installed backend with the same skips does nothing and succeeds. A value
+/// outside `Backend` is refused (`UnsupportedMethod`) and changes nothing.
 InstallResult install(Backend backend, const Config& config = Config::all());
+
+/// `install(backend_of(method), config)`; refused (`UnsupportedMethod`) for a method the plug-in
+/// does not offer (`DyopPaper`, `Batch`).
+InstallResult install(Method method, const Config& config = Config::all());
 
 /// Registers again what was registered for polygon pairs before the plug-in was installed
 /// (Box2D's own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made
@@ -249,9 +303,8 @@ void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShap
 /// Counters since the last `install` or `reset_stats`, summed over every thread that evaluated
 /// pairs (with one world, or worlds stepped one after another, the counts of those worlds).
 struct Stats {
-  /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`; methods that are
-  /// not backends stay 0).
-  std::array<std::uint64_t, method_count> triangle_pairs{};
+  /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`).
+  std::array<std::uint64_t, backend_count> triangle_pairs{};
   /// Other polygon pairs (a side with more than 3 vertices), passed to `b2CollidePolygons`.
   std::uint64_t polygon_pairs = 0;
   /// Triangle-pair evaluations that produced a non-empty manifold.

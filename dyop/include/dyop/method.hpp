@@ -1,14 +1,16 @@
 #pragma once
 /// \file
-/// The registry of narrow phases: one row per method, and every tool that lists methods draws
-/// from it (the `dyop` command line, `dyop bench`, `dyop stress`, the scenes and the paper
-/// experiment, the Box2D plug-in's backends, the Google Benchmark suite, the fuzzers). Adding a
-/// method means one `Method` value, one row of `method_table` and its implementation.
+/// The registry of the library's narrow phases: one row per method, and every tool that lists
+/// methods draws from it (the `dyop` command line, `dyop bench`, `dyop stress`, the scenes and
+/// the paper experiment, the engine plug-in's backends, the Google Benchmark suite, the fuzzers).
+/// Adding a method means one `Method` value, one row of `method_table` and its implementation.
 ///
 /// Each row says how the method is called (`Entry`), in which precisions and at which query
-/// levels, whether it keeps state between queries of the same pair (warm start), whether the
-/// Box2D plug-in offers it, and how exact it is. Its `name` is its one spelling in every table,
-/// CSV, chart and command line; a warm-startable method run both ways is spelt by `variant_name`.
+/// levels, whether it keeps state between queries of the same pair (warm start), whether it is
+/// fit to answer a physics engine's contacts, and how exact it is. Its `name` is its one spelling
+/// in every table, CSV, chart and command line; a warm-startable method run both ways is spelt by
+/// `variant_name`. Only the library's own methods are here: the references the testbed compares
+/// them with (a physics engine's own narrow phase) are named by the layers that link them.
 
 #include <array>
 #include <cstddef>
@@ -38,11 +40,10 @@ enum class Method : std::uint8_t {
   Sat,        ///< `sat`: the exact reference
   Epa,        ///< `epa`: GJK + EPA
   Batch,      ///< `batch`: `sat`'s answer for many pairs at once (`penetrate_batch`)
-  Box2D,      ///< `box2d`: Box2D 2.4's `b2CollidePolygons`, the production reference
 };
 
 /// Number of methods: the size of arrays indexed by `static_cast<int>(Method)`.
-inline constexpr int method_count = 8;
+inline constexpr int method_count = 7;
 
 /// How a method is called.
 enum class Entry : std::uint8_t {
@@ -50,9 +51,6 @@ enum class Entry : std::uint8_t {
   PerPair,
   /// Many pairs per call over structure-of-arrays input: `penetrate_batch` (`dyop/batch.hpp`).
   Batch,
-  /// Box2D's own code, which this library does not link: the Box2D plug-in
-  /// (`dyop/box2d.hpp`) runs it in worlds, the testbed's Box2D reference on single pairs.
-  Box2D,
 };
 
 /// How close to the exact answer a method's depth and status are, by design.
@@ -61,7 +59,7 @@ enum class Accuracy : std::uint8_t {
   ToTolerance,  ///< converges to a stated tolerance, invariant under rigid motions (EPA)
   LocalDepth,   ///< exact distance; depth a local minimum that depends on the start (Lin–Canny)
   /// Exact axes computed in world coordinates with absolute tolerances: depends on where the
-  /// pair is and how large it is (`b2CollidePolygons`)
+  /// pair is and how large it is (an engine's float narrow phase, as the testbed's references)
   AbsoluteTolerance,
   Approximate,  ///< a heuristic: can misclassify pairs and misjudge depths (`dyop-fast`, paper)
 };
@@ -87,7 +85,9 @@ inline constexpr std::uint8_t all_level_bits =
 namespace trait {
 inline constexpr std::uint8_t runs_double = 1u << 0;    ///< has a double-precision version
 inline constexpr std::uint8_t warm_start = 1u << 1;     ///< keeps state between queries of a pair
-inline constexpr std::uint8_t box2d_backend = 1u << 2;  ///< offered by the Box2D plug-in
+/// fit to answer a physics engine's contacts: one pair per call, robust, not the paper's literal
+/// equations (the engine plug-in offers these as its backends)
+inline constexpr std::uint8_t simulation = 1u << 2;
 inline constexpr std::uint8_t internal_edges = 1u << 3;  ///< honours `Query::internal_edges`
 }  // namespace trait
 
@@ -102,34 +102,31 @@ struct MethodInfo {
   const char* warm_name;  ///< see `cold_name`
   const char* summary;    ///< one line for lists and `--help`
   Entry entry;            ///< how it is called
-  /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth; Box2D: its
-  /// manifold is always whole, so it is asked (and timed) at Manifold.
+  /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth.
   std::uint8_t levels;
   std::uint8_t traits;  ///< `trait` bits; read them through the accessors below
   Accuracy accuracy;    ///< how exact it is by design
   PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
   PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
 
-  /// Has a double-precision version (Box2D runs in float only).
+  /// Has a double-precision version.
   constexpr bool runs_double() const { return (traits & trait::runs_double) != 0; }
   /// Keeps state between queries of the same pair (in its `PairState`).
   constexpr bool warm_start() const { return (traits & trait::warm_start) != 0; }
-  /// Offered by the Box2D plug-in as a backend for triangle pairs.
-  constexpr bool box2d_backend() const { return (traits & trait::box2d_backend) != 0; }
+  /// Fit to answer a physics engine's contacts (`trait::simulation`).
+  constexpr bool simulation() const { return (traits & trait::simulation) != 0; }
   /// Honours `Query::internal_edges` (the exact `dyop` and `sat`); the others answer as if every
   /// axis were allowed.
   constexpr bool internal_edges() const { return (traits & trait::internal_edges) != 0; }
 
   /// True when it answers queries at `level`.
   constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }
-  /// True when it needs Box2D (`Entry::Box2D`).
-  constexpr bool needs_box2d() const { return entry == Entry::Box2D; }
   /// True when its answers are exact or within a tolerance that does not depend on where the
   /// pair is: the same answer, moved, for a moved pair.
   constexpr bool invariant() const {
     return accuracy == Accuracy::Exact || accuracy == Accuracy::ToTolerance;
   }
-  /// The per-pair entry point in precision T (nullptr unless `Entry::PerPair`).
+  /// The per-pair entry point in precision T (nullptr for `Entry::Batch`).
   template <class T>
   constexpr PairFunction<T> run() const {
     if constexpr (std::is_same_v<T, float>) {
@@ -162,12 +159,12 @@ Result<T> lin_canny_warm(const Triangle<T>& a, const Triangle<T>& b, const Query
 inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::box2d_backend | trait::internal_edges,
+     all_level_bits, trait::runs_double | trait::simulation | trait::internal_edges,
      Accuracy::Exact, &detail::stateless<float, &dyop<float>>,
      &detail::stateless<double, &dyop<double>>},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
      "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits,
-     trait::runs_double | trait::box2d_backend, Accuracy::Approximate,
+     trait::runs_double | trait::simulation, Accuracy::Approximate,
      &detail::stateless<float, &dyop_fast<float>>, &detail::stateless<double, &dyop_fast<double>>},
     {Method::DyopPaper, "dyop-paper", nullptr, nullptr,
      "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_level_bits,
@@ -175,24 +172,20 @@ inline constexpr MethodInfo method_table[method_count] = {
      &detail::stateless<double, &dyop_paper<double>>},
     {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
      "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
-     Entry::PerPair, all_level_bits, trait::runs_double | trait::warm_start | trait::box2d_backend,
+     Entry::PerPair, all_level_bits, trait::runs_double | trait::warm_start | trait::simulation,
      Accuracy::LocalDepth, &detail::lin_canny_warm<float>, &detail::lin_canny_warm<double>},
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
      Entry::PerPair, all_level_bits,
-     trait::runs_double | trait::box2d_backend | trait::internal_edges, Accuracy::Exact,
+     trait::runs_double | trait::simulation | trait::internal_edges, Accuracy::Exact,
      &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::box2d_backend, Accuracy::ToTolerance,
+     all_level_bits, trait::runs_double | trait::simulation, Accuracy::ToTolerance,
      &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},
     {Method::Batch, "batch", nullptr, nullptr,
      "sat's answer over structure-of-arrays input, AVX2 when the CPU has it", Entry::Batch,
      static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)),
      trait::runs_double, Accuracy::Exact, nullptr, nullptr},
-    {Method::Box2D, "box2d", nullptr, nullptr,
-     "Box2D 2.4's b2CollidePolygons, the production reference", Entry::Box2D,
-     level_bit(Level::Manifold), trait::box2d_backend, Accuracy::AbsoluteTolerance, nullptr,
-     nullptr},
 };
 
 namespace detail {
@@ -211,7 +204,7 @@ static_assert(rows_in_method_order(), "method_table must list the methods in `Me
 constexpr const MethodInfo& info(Method m) { return method_table[static_cast<int>(m)]; }
 
 /// The one spelling of `m` (`info(m).name`): "dyop", "dyop-fast", "dyop-paper", "lin-canny",
-/// "sat", "epa", "batch", "box2d".
+/// "sat", "epa", "batch".
 constexpr const char* name(Method m) { return info(m).name; }
 
 /// The spelling of `m` run cold (`warm == false`) or warm-started: "lin-canny-cold" and
@@ -251,12 +244,12 @@ std::vector<Variant> variants(Keep keep) {
   return out;
 }
 
-/// A choice of the registry's rows (a backend of the Box2D plug-in, a method that runs without
-/// Box2D, ...): true for the rows it keeps.
+/// A choice of the registry's rows (the methods fit for simulation, those that answer single
+/// pairs, ...): true for the rows it keeps.
 using RowFilter = bool (*)(const MethodInfo& row);
 
 /// The method spelt `s` (its `name`) among the rows `keep` keeps (every row when nullptr), or
-/// nothing: the one parser of method and backend names.
+/// nothing: the one parser of method names (the engine plug-in's backends are parsed through it).
 std::optional<Method> parse_method(std::string_view s, RowFilter keep = nullptr);
 
 namespace detail {
@@ -290,8 +283,8 @@ inline constexpr auto pair_methods =
     detail::select_methods<detail::count_methods(detail::is_per_pair)>(detail::is_per_pair);
 
 /// Runs method `m` on one pair. `state` is the pair's warm-start state, used by the methods that
-/// keep one (`info(m).warm_start()`; nullptr: cold start). `m` must be one of `pair_methods`; the others
-/// (`Batch`, `Box2D`) answer `Invalid` here.
+/// keep one (`info(m).warm_start()`; nullptr: cold start). `m` must be one of `pair_methods`;
+/// `Batch` answers `Invalid` here.
 template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,
                     const Query<T>& query = {}, PairState* state = nullptr);

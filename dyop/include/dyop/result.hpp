@@ -26,12 +26,13 @@ enum class Status : std::uint8_t { Separated, Touching, Penetrating, Invalid };
 /// Why a method answered `Status::Invalid`, for a caller to branch on (`describe` spells it out).
 enum class InvalidReason : std::uint8_t {
   None,                ///< the result is not Invalid (or no method ran: a default `Result`)
-  NotPairMethod,       ///< `penetrate` was given a method with no per-pair entry (`Batch`, `Box2D`)
+  NotPairMethod,       ///< `penetrate` was given a method with no per-pair entry (`Batch`)
   PaperVerticalEdge,   ///< `dyop_paper`: a vertical pivot edge has no slope (paper eq. 3)
   PaperVertexAtOrigin, ///< `dyop_paper`: the pivot edge's P at the origin (eq. 8 divides by |P|)
   PaperSlopeOverflow,  ///< `dyop_paper`: the pivot edge too steep, its slope or depth not finite
-  Box2DNonFinite,      ///< Box2D's answer (`box2d::collide_triangles`) not finite: coordinates
-                       ///< too large for its float arithmetic
+  /// A reference outside the library (an engine's own narrow phase, run by the testbed) gave a
+  /// non-finite value: coordinates too large for its float arithmetic
+  ReferenceNonFinite,
 };
 
 /// A static, human-readable description of `r` ("unknown method", ...).
