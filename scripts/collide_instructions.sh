@@ -5,7 +5,7 @@
 # counts do not move with the load of a shared machine as wall time does; they ignore cache misses
 # and mispredictions (callgrind's branch simulation counts the latter: --branch-sim=yes).
 #   scripts/collide_instructions.sh [STEPS] [SCENE...]   (defaults: 150 steps; pyramid
-#   stack-concave rain tumbler); BACKENDS (default "dyop") names the backends.
+#   stack-concave rain tumbler); BACKENDS (default "dyop") names the backends (runners beside box2d-own).
 # Needs valgrind and a built tree (build/bin/dyop). The scene's probe (depth errors, untimed) runs
 # outside Step and is not counted.
 set -euo pipefail
@@ -27,7 +27,7 @@ for scene in "${scenes[@]}"; do
   for b in box2d-own "${backends[@]}"; do
     f="$out/$scene.$b.out"
     valgrind --tool=callgrind --callgrind-out-file="$f" \
-      build/bin/dyop scene "$scene" --backend "$b" --steps "$steps" >/dev/null 2>&1
+      build/bin/dyop scene "$scene" --runner "$b" --steps "$steps" >/dev/null 2>&1
     collide[$b]=$(inclusive "$f" 'b2ContactManager::Collide\(\)')
     step[$b]=$(inclusive "$f" 'b2World::Step\(')
     printf '%-14s %-10s %14s %8s %14s %8s\n' "$scene" "$b" "${collide[$b]}" \

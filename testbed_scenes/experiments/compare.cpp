@@ -23,7 +23,7 @@ bool listed(const std::array<const char*, N>& names, const std::string& name) {
 SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int steps,
                               const CompareOptions& options) {
   std::vector<box2d::Config> configs = {box2d::Config::none(), options.skips};
-  if (is_skip_target(s.name, box2d::name(b))) {
+  if (is_skip_target(s.name, b)) {
     for (const scenes::SkipSwitch& sw : scenes::skip_switches()) {
       if (sw.field == &box2d::Config::lin_canny_cache) continue;
       box2d::Config alone = box2d::Config::none();
@@ -47,13 +47,12 @@ SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int 
 
 int skip_repetitions(bool quick) { return quick ? 1 : 3; }
 
-bool is_skip_target(const std::string& scene, const std::string& backend) {
-  return backend == box2d::name(skip_target_backend) && listed(skip_target_scenes, scene);
+bool is_skip_target(const std::string& scene, const scenes::Runner& runner) {
+  return runner == skip_target_backend && listed(skip_target_scenes, scene);
 }
 
-bool skips_keep_the_answer(const std::string& backend) {
-  return backend != box2d::name(box2d::Backend::LinCanny) &&
-         backend != box2d::name(box2d::Backend::DyopFast);
+bool skips_keep_the_answer(const scenes::Runner& runner) {
+  return runner != box2d::Backend::LinCanny && runner != box2d::Backend::DyopFast;
 }
 
 double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetrics& off) {
@@ -107,7 +106,7 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
 
 std::optional<double> ratio_to_box2d(const CompareRun& run, const scenes::SceneMetrics& m) {
   for (const scenes::SceneMetrics& r : run.rows) {
-    if (r.scene == m.scene && r.backend == "box2d" && r.narrowphase_ns_per_pair > 0) {
+    if (r.scene == m.scene && r.runner == box2d::Backend::Box2D && r.narrowphase_ns_per_pair > 0) {
       return m.narrowphase_ns_per_pair / r.narrowphase_ns_per_pair;
     }
   }

@@ -82,7 +82,7 @@ struct SkipMeasurement {
 };
 
 /// True for a scene and backend of the target.
-bool is_skip_target(const std::string& scene, const std::string& backend);
+bool is_skip_target(const std::string& scene, const scenes::Runner& runner);
 
 /// `on`'s narrow-phase time per contact update over `off`'s. When the two worlds evolve
 /// identically (equal hashes) they have the same contact updates, so this is also the ratio of
@@ -91,7 +91,7 @@ double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetr
 
 /// True for the backends whose answer no skip changes (bit-identical worlds): every one but
 /// `lin-canny` (warm-started) and `dyop-fast` (approximate), as `box2d::Config` says.
-bool skips_keep_the_answer(const std::string& backend);
+bool skips_keep_the_answer(const scenes::Runner& runner);
 
 /// What the main run produced.
 struct CompareRun {

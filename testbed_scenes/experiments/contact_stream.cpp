@@ -252,7 +252,7 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
   }
   for (int k = 0; k < runners; ++k) {
     const scenes::Runner b = backend_of(k);
-    r.runners[k].runner = scenes::name(b);
+    r.runners[k].runner = b;
     r.runners[k].agreement = b ? compare_with_box2d(stream, *b, options.config) : own;
     r.runners[k].ns_per_call = HUGE_VAL;
   }

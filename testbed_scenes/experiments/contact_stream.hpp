@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "dyop/box2d.hpp"
+#include "scenes/runner.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::experiments {
@@ -101,9 +102,9 @@ struct StreamAgreement {
 
 /// The figures of one runner on one stream.
 struct StreamRunnerResult {
-  /// `box2d::name(backend)` for the plug-in's backends; "box2d-own" for `b2CollidePolygons`
-  /// called directly (the reference).
-  std::string runner;
+  /// A backend of the plug-in (through `collide_polygons`), or nothing: `b2CollidePolygons`
+  /// called directly (the reference, spelt `box2d_own`).
+  scenes::Runner runner;
   double ns_per_call = 0;         ///< best pass, ns per call over the whole stream
   double ratio_vs_box2d_own = 0;  ///< `ns_per_call` / box2d-own's, same run
   StreamAgreement agreement;      ///< against `b2CollidePolygons` (box2d-own: with itself)

@@ -30,7 +30,7 @@ InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, 
   }
   InWorldRatio r;
   r.scene = scene;
-  r.backend = box2d::name(backend);
+  r.backend = backend;
   r.steps = own.front().steps;
   r.repetitions = repetitions;
   r.own = side_of(own);

@@ -34,7 +34,7 @@ struct InWorldSide {
 /// A backend against Box2D's own contact in one scene.
 struct InWorldRatio {
   std::string scene;    ///< catalogue name, or `rain-<n>` for a scaling size
-  std::string backend;  ///< `box2d::name`
+  box2d::Backend backend = box2d::Backend::Dyop;  ///< the plug-in's side
   int steps = 0;        ///< steps of every run
   int repetitions = 0;  ///< runs of each side
   InWorldSide own;      ///< Box2D's own contact (`box2d_own`)

@@ -23,7 +23,7 @@ scenes::SceneMetrics run_rain(const scenes::Runner& runner, int falling, const S
 
 ScalingRecord record_of(const scenes::SceneMetrics& m, int falling) {
   ScalingRecord r;
-  r.backend = m.backend;
+  r.runner = m.runner;
   r.falling = falling;
   r.triangles = m.triangles;
   r.steps = m.steps;
@@ -78,7 +78,7 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
   }
   std::map<int, double> box2d_ms;
   for (const ScalingRecord& r : records) {
-    if (r.backend == box2d::name(box2d::Backend::Box2D)) box2d_ms[r.falling] = r.narrowphase_ms_per_step;
+    if (r.runner == box2d::Backend::Box2D) box2d_ms[r.falling] = r.narrowphase_ms_per_step;
   }
   for (ScalingRecord& r : records) {
     const double base = box2d_ms[r.falling];

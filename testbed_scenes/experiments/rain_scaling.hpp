@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "scenes/runner.hpp"
+
 namespace dyop::experiments {
 
 struct ScalingOptions {
@@ -27,9 +29,9 @@ struct ScalingOptions {
   std::uint64_t seed = 1;
 };
 
-/// One run: a backend on `rain` with `falling` triangles.
+/// One run: a runner on `rain` with `falling` triangles.
 struct ScalingRecord {
-  std::string backend;          ///< "dyop", ..., "box2d", or "box2d-own" (plug-in not installed)
+  scenes::Runner runner;        ///< a backend, or Box2D's own contact (plug-in not installed)
   int falling = 0;              ///< falling triangles
   int triangles = 0;            ///< every triangle fixture, the bin's included
   int steps = 0;                ///< steps run

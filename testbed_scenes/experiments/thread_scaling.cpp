@@ -67,7 +67,7 @@ std::vector<ThreadScalingRecord> run_thread_scaling(const ThreadScalingOptions& 
     box2d::uninstall();
     for (int k = 0; k < 2; ++k) {
       ThreadScalingRecord r;
-      r.runner = scenes::name(runners[k]);
+      r.runner = runners[k];
       r.threads = n;
       r.steps = options.steps;
       r.seconds = best[k];

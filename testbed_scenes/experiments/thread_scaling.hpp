@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "scenes/runner.hpp"
+
 namespace dyop::experiments {
 
 struct ThreadScalingOptions {
@@ -28,7 +30,7 @@ struct ThreadScalingOptions {
 
 /// The fastest run of one runner at one N.
 struct ThreadScalingRecord {
-  std::string runner;  ///< "dyop", or "box2d-own" (the plug-in not installed)
+  scenes::Runner runner;  ///< `Backend::Dyop`, or Box2D's own contact (the plug-in not installed)
   int threads = 0;     ///< worlds stepped at once, one per thread
   int steps = 0;       ///< steps of each world
   double seconds = 0;  ///< wall time from the threads' start to the last one's end

@@ -1,4 +1,4 @@
-// `dyop scene`: the command (one scene under one backend, its summary, JSON and SVG) and its
+// `dyop scene`: the command (one scene under one runner, its summary, JSON and SVG) and its
 // registration.
 #include "program/scene_command.hpp"
 
@@ -23,7 +23,7 @@ using namespace dyop::scenes;
 void write_summary(const SceneMetrics& m, std::ostream& out) {
   const auto flags = out.flags();
   const auto precision = out.precision(4);
-  out << "scene " << m.scene << " / " << m.backend << ", seed " << m.seed << ": " << m.steps
+  out << "scene " << m.scene << " / " << name(m.runner) << ", seed " << m.seed << ": " << m.steps
       << " steps, " << m.bodies << " bodies, " << m.triangles << " triangles\n"
       << "  narrow phase: " << m.triangle_pairs << " triangle pairs, " << m.narrowphase_ns_per_pair
       << " ns per pair (" << m.narrowphase_ms_total << " ms); step median " << m.step_ms_median
@@ -55,7 +55,7 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
     }
     out << '\n';
   } else {
-    out << (m.backend == box2d_own ? "  skips: none apply (the plug-in is not installed)\n"
+    out << (!m.runner ? "  skips: none apply (the plug-in is not installed)\n"
                                    : "  skips: none apply (no Box2D world)\n");
   }
   out.precision(precision);
@@ -64,14 +64,13 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
 
 int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& err) {
   const SceneInfo* info = find_scene(c.scene);
-  const std::optional<box2d::Backend> backend = box2d::parse_backend(c.backend);
-  const bool own = c.backend == box2d_own;
-  if (info == nullptr || !(backend || own)) {
+  const std::optional<Runner> runner = parse_runner(c.runner);
+  if (info == nullptr || !runner) {
     err << "dyop scene: unknown "
-        << (info == nullptr ? "scene '" + c.scene + "'" : "backend '" + c.backend + "'") << '\n';
+        << (info == nullptr ? "scene '" + c.scene + "'" : "runner '" + c.runner + "'") << '\n';
     return exit_usage_error;
   }
-  if (own && std::string(info->name) == "paper") {
+  if (!*runner && std::string(info->name) == "paper") {
     err << "dyop scene: paper has no Box2D world: " << box2d_own << " runs only Box2D scenes\n";
     return exit_usage_error;
   }
@@ -104,11 +103,11 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   SceneMetrics m;
   Drawing final_state;
   try {
-    m = run_scene(c.scene, own ? Runner() : Runner(backend), c.steps.value_or(info->default_steps),
+    m = run_scene(c.scene, *runner, c.steps.value_or(info->default_steps),
                   c.seed, skips.config,
                   c.svg.empty() ? nullptr : &final_state);
   } catch (const std::exception& e) {
-    err << "dyop scene: " << c.scene << " / " << c.backend << " could not run: " << e.what()
+    err << "dyop scene: " << c.scene << " / " << c.runner << " could not run: " << e.what()
         << '\n';
     return exit_io_error;
   }
@@ -128,22 +127,22 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
 void add_scene_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneCommand>();
   auto steps = std::make_shared<int>(0);
-  std::vector<std::string> names, backends;
+  std::vector<std::string> names, runners;
   std::string list;
   for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
     names.push_back(s.name);
     list += std::string("\n  ") + s.name + ": " + s.description;
   }
-  for (box2d::Backend b : box2d::all_backends) backends.push_back(box2d::name(b));
-  backends.push_back(scenes::box2d_own);
+  for (box2d::Backend b : box2d::all_backends) runners.push_back(box2d::name(b));
+  runners.push_back(scenes::box2d_own);
   CLI::App* cmd = app.add_subcommand(
       "scene", "Run one headless scene under one narrow phase and measure it. Scenes:" + list);
   cmd->add_option("name", args->scene, "Scene")->required()->check(CLI::IsMember(names));
-  cmd->add_option("--backend,-b", args->backend,
-                  "Narrow phase for triangle pairs (box2d: Box2D's b2CollidePolygons through the "
-                  "plug-in; box2d-own: the plug-in not installed)")
+  cmd->add_option("--runner,-r", args->runner,
+                  "What answers the polygon pairs: a backend of the plug-in (box2d: Box2D's "
+                  "b2CollidePolygons through the plug-in), or box2d-own: the plug-in not installed")
       ->required()
-      ->check(CLI::IsMember(backends));
+      ->check(CLI::IsMember(runners));
   CLI::Option* steps_option =
       cmd->add_option("--steps", *steps, "Steps to run (default: the scene's own)")
           ->check(CLI::Range(1, 10000000));

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// `dyop scene NAME --backend B [--steps N] [--seed S] [--skip all|none|LIST] [--json FILE|-]
-/// [--svg FILE|-]`: runs one scene under one backend with the given narrow-phase skips, prints a
+/// `dyop scene NAME --runner R [--steps N] [--seed S] [--skip all|none|LIST] [--json FILE|-]
+/// [--svg FILE|-]`: runs one scene under one runner with the given narrow-phase skips, prints a
 /// short summary, and writes the figures as JSON and the final state as SVG. The command line
 /// (CLI11, `add_scene_command`) validates names; this checks them again, checks files and runs.
 
@@ -16,9 +16,9 @@ namespace dyop::cli {
 
 struct SceneCommand {
   std::string scene;         ///< a name of `scenes::scene_catalog()`
-  /// "dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d", or "box2d-own" (Box2D scenes: the
-  /// plug-in not installed)
-  std::string backend;
+  /// A backend ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or "box2d-own" (Box2D
+  /// scenes: the plug-in not installed): `scenes::parse_runner`
+  std::string runner;
   std::optional<int> steps;  ///< none: the scene's default
   std::uint64_t seed = 0;
   std::string skip = "all";  ///< a `parse_skips` argument; the `paper` scene ignores it

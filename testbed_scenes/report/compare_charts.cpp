@@ -39,7 +39,7 @@ class MainCharts {
       for (const std::string& s : scene_names(run_)) {
         std::vector<double> times;
         for (box2d::Backend b : box2d::all_backends) {
-          const SceneMetrics* m = row(run_, s, box2d::name(b));
+          const SceneMetrics* m = row(run_, s, b);
           times.push_back(m ? m->narrowphase_ns_per_pair : kMissing);
         }
         write_data_line(o, s, times);
@@ -61,7 +61,7 @@ class MainCharts {
       for (box2d::Backend b : box2d::all_backends) {
         o << "# " << box2d::name(b) << ": ns_per_pair pd_error_max scene\n";
         for (const SceneMetrics& m : run_.rows) {
-          if (m.backend != box2d::name(b)) continue;
+          if (m.runner != b) continue;
           o << fmt("%.6g", m.narrowphase_ns_per_pair) << ' '
             << fmt("%.6g", std::max(m.pd_error_max, kErrorFloor)) << ' ' << m.scene << '\n';
         }

@@ -37,7 +37,7 @@ Records in_world_records(const std::vector<InWorldRatio>& rows) {
                {"contact_updates_own", "contact updates own", "updates_own", 11},
                {"contact_updates", "contact updates, plug-in", "updates", 10}});
   for (const InWorldRatio& r : rows) {
-    out.add({Value::text(r.scene), Value::text(r.backend), Value::count(r.steps),
+    out.add({Value::text(r.scene), Value::text(box2d::name(r.backend)), Value::count(r.steps),
              Value::count(r.repetitions), Value::number(r.own.narrowphase_ms, "%.2f"),
              Value::number(r.plugin.narrowphase_ms, "%.2f"),
              Value::number(r.narrowphase_ratio(), "%.2f"), Value::number(r.own.step_ms, "%.1f"),
@@ -83,7 +83,7 @@ void InWorldSection::write_tables(std::ostream& out) const {
 // bar per backend, narrow phase above and step below.
 void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
   dir.write("inworld.csv", [&](std::ostream& o) { in_world_records(rows_).write_csv(o); });
-  std::vector<std::string> backends;
+  std::vector<box2d::Backend> backends;
   std::vector<std::string> scene_order;
   for (const InWorldRatio& r : rows_) {
     if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) {
@@ -91,7 +91,7 @@ void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
     }
     if (scene_order.empty() || scene_order.back() != r.scene) scene_order.push_back(r.scene);
   }
-  auto ratio = [&](const std::string& scene, const std::string& backend, bool step) {
+  auto ratio = [&](const std::string& scene, box2d::Backend backend, bool step) {
     for (const InWorldRatio& r : rows_) {
       if (r.scene == scene && r.backend == backend) {
         return step ? r.step_ratio() : r.narrowphase_ratio();
@@ -102,11 +102,11 @@ void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
   for (const bool step : {false, true}) {
     dir.write(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {
       o << "scene";
-      for (const std::string& b : backends) o << ' ' << b;
+      for (const box2d::Backend b : backends) o << ' ' << box2d::name(b);
       o << '\n';
       for (const std::string& s : scene_order) {
         std::vector<double> ratios;
-        for (const std::string& b : backends) ratios.push_back(ratio(s, b, step));
+        for (const box2d::Backend b : backends) ratios.push_back(ratio(s, b, step));
         write_data_line(o, s, ratios);
       }
     });

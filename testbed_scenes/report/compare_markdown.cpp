@@ -65,7 +65,7 @@ class Markdown {
     o << "## Scenes\n\n| scene | what | steps | bodies | triangle fixtures | final state (dyop) |\n"
       << "|---|---|--:|--:|--:|---|\n";
     for (const std::string& s : scene_names(run_)) {
-      const SceneMetrics* m = row(run_, s, "dyop");
+      const SceneMetrics* m = row(run_, s, box2d::Backend::Dyop);
       const SceneInfo* info = find_scene(s);
       o << "| " << s << " | " << (info ? info->description : "") << " | " << (m ? m->steps : 0)
         << " | " << (m ? m->bodies : 0) << " | " << (m ? m->triangles : 0) << " | [scene_" << s
@@ -91,13 +91,13 @@ class Markdown {
   void problems(std::ostream& o) const {
     std::vector<std::string> lines;
     for (const SceneMetrics& m : run_.rows) {
-      const std::string who = "`" + m.scene + "` / `" + m.backend + "`: ";
+      const std::string who = "`" + m.scene + "` / `" + name(m.runner) + "`: ";
       if (m.nan_detected) lines.push_back(who + "non-finite state or figure");
       if (m.fallbacks && *m.fallbacks > 0) {
         lines.push_back(who + std::to_string(*m.fallbacks) + " pairs answered by Box2D instead");
       }
       if (m.top_displacement && *m.top_displacement > standing_displacement) {
-        const SceneMetrics* ref = row(run_, m.scene, "box2d");
+        const SceneMetrics* ref = row(run_, m.scene, box2d::Backend::Box2D);
         lines.push_back(who + "top moved " + fmt("%.3f", *m.top_displacement) + " m (box2d: " +
                         (ref && ref->top_displacement ? fmt("%.3f", *ref->top_displacement)
                                                       : std::string("n/a")) +

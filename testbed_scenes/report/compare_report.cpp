@@ -21,9 +21,9 @@ std::vector<std::string> scene_names(const CompareRun& run) {
 }
 
 const SceneMetrics* row(const CompareRun& run, const std::string& scene,
-                        const std::string& backend) {
+                        const scenes::Runner& runner) {
   for (const SceneMetrics& m : run.rows) {
-    if (m.scene == scene && m.backend == backend) return &m;
+    if (m.scene == scene && m.runner == runner) return &m;
   }
   return nullptr;
 }

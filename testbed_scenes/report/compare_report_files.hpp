@@ -33,6 +33,6 @@ void write_markdown(const ReportFiles& files, std::ostream& o);
 // absent).
 std::vector<std::string> scene_names(const CompareRun& run);
 const SceneMetrics* row(const CompareRun& run, const std::string& scene,
-                        const std::string& backend);
+                        const scenes::Runner& runner);
 
 }  // namespace dyop::report::detail

@@ -20,7 +20,7 @@ using namespace dyop::experiments;
 // Only the exact backends promise equal hashes: a difference there is flagged.
 std::string hashes_equal(const SceneMetrics& on, const SceneMetrics& off) {
   if (on.hash == off.hash) return "yes";
-  return skips_keep_the_answer(on.backend) ? "NO" : "no";
+  return skips_keep_the_answer(on.runner) ? "NO" : "no";
 }
 
 // "n (p %)" skipped of the evaluations.
@@ -109,7 +109,7 @@ class SkipSection : public CompareSection {
 
     std::string target;
     for (const SkipMeasurement& m : measurements_) {
-      if (!is_skip_target(m.on.scene, m.on.backend)) continue;
+      if (!is_skip_target(m.on.scene, m.on.runner)) continue;
       const double r = narrowphase_ratio(m.on, m.off);
       const bool equal = m.on.hash == m.off.hash;
       target += std::string(target.empty() ? "" : "; ") + "`" + m.on.scene + "` " + fmt("%.2f", r) +
@@ -126,7 +126,7 @@ class SkipSection : public CompareSection {
 
     std::vector<std::string> differ, same;
     for (const SkipMeasurement& m : measurements_) {
-      if (m.on.backend != name(Method::LinCanny)) continue;
+      if (m.on.runner != box2d::Backend::LinCanny) continue;
       (m.on.hash == m.off.hash ? same : differ).push_back("`" + m.on.scene + "`");
     }
     if (differ.empty() && same.empty()) return;
@@ -155,14 +155,14 @@ class SkipSection : public CompareSection {
 
   void problems(std::vector<std::string>& lines) const override {
     for (const SkipMeasurement& m : measurements_) {
-      const std::string who = "`" + m.on.scene + "` / `" + m.on.backend + "`: ";
-      if (m.on.hash != m.off.hash && skips_keep_the_answer(m.on.backend)) {
+      const std::string who = "`" + m.on.scene + "` / `" + name(m.on.runner) + "`: ";
+      if (m.on.hash != m.off.hash && skips_keep_the_answer(m.on.runner)) {
         lines.push_back(who + "skips `" + skip_argument(skips_) +
                         "` changed the final state (hash " + hash_hex(m.on.hash) +
                         ", none: " + hash_hex(m.off.hash) + ")");
       }
       const bool all = skip_argument(skips_) == "all";  // what the target is about
-      if (all && is_skip_target(m.on.scene, m.on.backend) &&
+      if (all && is_skip_target(m.on.scene, m.on.runner) &&
           narrowphase_ratio(m.on, m.off) > skip_target_ratio) {
         lines.push_back(who + "narrow-phase time with skips on " +
                         fmt("%.2f", narrowphase_ratio(m.on, m.off)) + " × off, above the target " +
@@ -183,7 +183,7 @@ class SkipSection : public CompareSection {
         << "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|\n";
     for (const SkipMeasurement& m : measurements_) {
       const std::uint64_t of = m.on.plugin_evaluations.value_or(0);
-      out << "| " << m.on.scene << " | " << m.on.backend << " | " << m.on.steps << " | "
+      out << "| " << m.on.scene << " | " << name(m.on.runner) << " | " << m.on.steps << " | "
           << fmt("%.1f", m.on.narrowphase_ns_per_pair) << " | "
           << fmt("%.1f", m.off.narrowphase_ns_per_pair) << " | "
           << fmt("%.2f", narrowphase_ratio(m.on, m.off)) << " | " << fmt("%.3g", m.on.step_ms_median)
@@ -220,7 +220,7 @@ class SkipSection : public CompareSection {
 
     bool lin_canny = false;
     for (const SkipMeasurement& m : measurements_) {
-      lin_canny = lin_canny || m.on.backend == box2d::name(box2d::Backend::LinCanny);
+      lin_canny = lin_canny || m.on.runner == box2d::Backend::LinCanny;
     }
     if (!lin_canny) return;
     out << "\n`lin-canny` with skips `" << on << "` against `none` (its answer may change: see "
@@ -229,7 +229,7 @@ class SkipSection : public CompareSection {
            "| pd error max m on / off | misclassified on / off | KE final J on / off |\n"
         << "|---|---|--:|--:|--:|--:|--:|\n";
     for (const SkipMeasurement& m : measurements_) {
-      if (m.on.backend != box2d::name(box2d::Backend::LinCanny)) continue;
+      if (m.on.runner != box2d::Backend::LinCanny) continue;
       out << "| " << m.on.scene << " | " << (m.on.hash == m.off.hash ? "yes" : "no") << " | "
           << m.on.contact_updates << " / " << m.off.contact_updates << " | "
           << metres(m.on.max_penetration) << " / " << metres(m.off.max_penetration) << " | "
@@ -255,7 +255,7 @@ class SkipSection : public CompareSection {
       for (const SceneMetrics& a : m.alone) on.push_back(&a);
       for (const SceneMetrics* r : on) {
         // A skip list has commas: quoted, as CSV does.
-        o << r->scene << ',' << r->backend << ',' << r->steps << ",\""
+        o << r->scene << ',' << name(r->runner) << ',' << r->steps << ",\""
           << (r->skip_config ? skip_argument(*r->skip_config) : "") << "\"," << r->contact_updates
           << ',' << m.off.contact_updates << ',' << fmt("%.6g", r->narrowphase_ns_per_pair) << ','
           << fmt("%.6g", m.off.narrowphase_ns_per_pair) << ','

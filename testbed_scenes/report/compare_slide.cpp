@@ -45,7 +45,7 @@ class SlideSection : public CompareSection {
   void write_files(ReportDirectory& dir, Charts& charts) const override {
     dir.write("slide.csv", [&](std::ostream& o) { csv(o); });
     for (const SlideRun& r : runs_) {
-      dir.write("slide_" + r.metrics.backend + ".svg",
+      dir.write("slide_" + std::string(scenes::name(r.metrics.runner)) + ".svg",
                 [&](std::ostream& o) { report::write_svg(r.final_state, o); });
     }
     paths_chart(dir, charts);
@@ -76,12 +76,12 @@ class SlideSection : public CompareSection {
     o << '\n';
     charts.image(o, "slide_paths", "each slider's height against distance travelled, per runner");
     o << "Final states side by side (lanes top to bottom in the order of the table above):\n\n|";
-    for (const SlideRun& r : runs_) o << ' ' << r.metrics.backend << " |";
+    for (const SlideRun& r : runs_) o << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
     o << "\n|";
     for (std::size_t i = 0; i < runs_.size(); ++i) o << "---|";
     o << "\n|";
     for (const SlideRun& r : runs_) {
-      o << " ![slide, " << r.metrics.backend << "](slide_" << r.metrics.backend << ".svg) |";
+      o << " ![slide, " << std::string(scenes::name(r.metrics.runner)) << "](slide_" << std::string(scenes::name(r.metrics.runner)) << ".svg) |";
     }
     o << "\n\n";
   }
@@ -99,13 +99,13 @@ class SlideSection : public CompareSection {
     for (const SlideRun& r : runs_) {
       const scenes::SceneMetrics& m = r.metrics;
       if (!m.slide) continue;
-      out << "| " << m.backend << " | " << fmt("%.4f", m.slide->max_vertical_speed) << " | "
+      out << "| " << scenes::name(m.runner) << " | " << fmt("%.4f", m.slide->max_vertical_speed) << " | "
           << fmt("%.4f", m.slide->max_angular_speed) << " | " << percent(m.slide->min_travel)
           << " | " << (m.top_displacement ? metres(*m.top_displacement) : "n/a") << " |\n";
     }
     if (runs_.empty() || !runs_.front().metrics.slide) return;
     out << "\n| slider |";
-    for (const SlideRun& r : runs_) out << ' ' << r.metrics.backend << " |";
+    for (const SlideRun& r : runs_) out << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
     out << "\n|---|";
     for (std::size_t i = 0; i < runs_.size(); ++i) out << "---|";
     out << '\n';
@@ -130,9 +130,9 @@ class SlideSection : public CompareSection {
       const scenes::SceneMetrics& m = r.metrics;
       if (!m.slide) continue;
       for (const scenes::SliderFigures& f : m.slide->sliders) {
-        o << m.backend << ',' << f.body << ',' << f.ground << ',' << (f.rolling ? "true" : "false")
+        o << scenes::name(m.runner) << ',' << f.body << ',' << f.ground << ',' << (f.rolling ? "true" : "false")
           << ',' << m.steps << ','
-          << (m.backend == scenes::box2d_own ? "" : internal_edges_ ? "true" : "false") << ','
+          << (!m.runner ? "" : internal_edges_ ? "true" : "false") << ','
           << fmt("%.6g", f.max_vertical_speed) << ',' << fmt("%.6g", f.max_angular_speed) << ','
           << fmt("%.6g", f.travel) << ','
           << (m.top_displacement ? fmt("%.6g", *m.top_displacement) : "") << '\n';
@@ -147,7 +147,7 @@ class SlideSection : public CompareSection {
     dir.write("slide_paths.dat", [&](std::ostream& o) {
       for (const SlideRun& r : runs_) {
         for (const experiments::SliderPath& p : r.paths) {
-          o << "# " << r.metrics.backend << ": " << p.body << " on " << p.ground
+          o << "# " << std::string(scenes::name(r.metrics.runner)) << ": " << p.body << " on " << p.ground
             << ": x height\n";
           for (std::size_t i = 0; i < p.x.size(); ++i) {
             o << fmt("%.6g", p.x[i]) << ' ' << fmt("%.6g", p.height[i]) << '\n';
@@ -167,7 +167,7 @@ class SlideSection : public CompareSection {
          << "set xrange [-1:*]\n";
     int index = 0;
     for (const SlideRun& r : runs_) {
-      plot << "set title '" << r.metrics.backend << "'\n"
+      plot << "set title '" << std::string(scenes::name(r.metrics.runner)) << "'\n"
            << (&r == &runs_.back() ? "set xlabel 'distance along x (m)'\n" : "") << "plot ";
       for (std::size_t k = 0; k < r.paths.size(); ++k, ++index) {
         plot << (k ? ", " : "") << dir.quoted("slide_paths.dat") << " index " << index

@@ -22,7 +22,7 @@ void write_compare_table(const CompareRun& run, std::ostream& out) {
       top = fmt("%.3f", *m.top_displacement) +
             (*m.top_displacement <= standing_displacement ? " (stands)" : " (FELL)");
     }
-    out << "| " << m.scene << " | " << m.backend << " | " << m.steps << " | " << m.triangle_pairs
+    out << "| " << m.scene << " | " << name(m.runner) << " | " << m.steps << " | " << m.triangle_pairs
         << " | " << fmt("%.3g", m.step_ms_median) << " | " << fmt("%.0f", m.narrowphase_ns_per_pair)
         << " | " << (ratio ? fmt("%.2f", *ratio) : "–") << " | " << metres(m.max_penetration)
         << " | " << metres(m.mean_penetration) << " | " << metres(m.pd_error_max) << " | "

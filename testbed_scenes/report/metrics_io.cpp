@@ -72,7 +72,7 @@ bool json_only(const Json& value) {
 Json to_json(const SceneMetrics& m) {
   Json j;
   j["scene"] = m.scene;
-  j["backend"] = m.backend;
+  j["runner"] = scenes::name(m.runner);
   j["seed"] = m.seed;
   j["steps"] = m.steps;
   j["bodies"] = m.bodies;

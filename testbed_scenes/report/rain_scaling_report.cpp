@@ -1,5 +1,6 @@
 #include "report/rain_scaling_report.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "report/gnuplot.hpp"
@@ -9,7 +10,7 @@ namespace dyop::report {
 using experiments::ScalingRecord;
 
 Records scaling_records(const std::vector<ScalingRecord>& records) {
-  Records out({{"backend", "backend", "", -10},
+  Records out({{"runner", "runner", "", -10},
                {"falling", "falling", "", 7},
                {"triangles", "triangles", "", 9},
                {"steps", "steps", "", 6, where::files},
@@ -24,7 +25,7 @@ Records scaling_records(const std::vector<ScalingRecord>& records) {
                {"fallbacks", "fallbacks", "fallb", 5},
                {"nan_detected", "NaN", "nan", 3}});
   for (const ScalingRecord& r : records) {
-    out.add({Value::text(r.backend), Value::count(r.falling), Value::count(r.triangles),
+    out.add({Value::text(scenes::name(r.runner)), Value::count(r.falling), Value::count(r.triangles),
              Value::count(r.steps), Value::number(r.step_ms_median, "%.3f"),
              Value::number(r.narrowphase_ms_per_step, "%.3f"),
              Value::number(r.narrowphase_ns_per_pair, "%.1f"),
@@ -39,18 +40,18 @@ Records scaling_records(const std::vector<ScalingRecord>& records) {
 std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
                                   ReportDirectory& dir) {
   dir.write("scaling.csv", [&](std::ostream& o) { scaling_records(records).write_csv(o); });
-  // One data block per backend (gnuplot's `index`), in the order of the records.
-  std::vector<std::string> backends;
+  // One data block per runner (gnuplot's `index`), in the order of the records.
+  std::vector<scenes::Runner> runners;
   for (const ScalingRecord& r : records) {
-    bool seen = false;
-    for (const std::string& b : backends) seen = seen || b == r.backend;
-    if (!seen) backends.push_back(r.backend);
+    if (std::find(runners.begin(), runners.end(), r.runner) == runners.end()) {
+      runners.push_back(r.runner);
+    }
   }
   dir.write("rain_scaling.dat", [&](std::ostream& o) {
-    for (const std::string& b : backends) {
-      o << "# " << b << ": falling step_ms_median narrowphase_ms_per_step\n";
+    for (const scenes::Runner& b : runners) {
+      o << "# " << scenes::name(b) << ": falling step_ms_median narrowphase_ms_per_step\n";
       for (const ScalingRecord& r : records) {
-        if (r.backend == b) {
+        if (r.runner == b) {
           write_data_line(o, std::to_string(r.falling),
                           {r.step_ms_median, r.narrowphase_ms_per_step});
         }
@@ -66,9 +67,10 @@ std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
                               {"2", "whole step ms (median)"}};
   for (const auto& panel : panels) {
     script << "set ylabel '" << panel[1] << "'\nplot ";
-    for (std::size_t i = 0; i < backends.size(); ++i) {
+    for (std::size_t i = 0; i < runners.size(); ++i) {
       script << (i ? ", \\\n     " : "") << dir.quoted("rain_scaling.dat") << " index " << i
-             << " using 1:" << panel[0] << " with linespoints lw 2 title '" << backends[i] << "'";
+             << " using 1:" << panel[0] << " with linespoints lw 2 title '"
+             << scenes::name(runners[i]) << "'";
     }
     script << "\n";
   }

@@ -58,7 +58,7 @@ Records stream_records(const std::vector<StreamResult>& results) {
                Value::count(static_cast<std::int64_t>(r.triangle_calls)),
                percent(share(r.triangle_calls, r.calls)),
                Value::count(static_cast<std::int64_t>(r.calls_with_points)),
-               percent(share(r.calls_with_points, r.calls)), Value::text(x.runner),
+               percent(share(r.calls_with_points, r.calls)), Value::text(scenes::name(x.runner)),
                Value::number(x.ns_per_call, "%.1f"), Value::number(x.ratio_vs_box2d_own, "%.3f"),
                Value::count(static_cast<std::int64_t>(a.same_point_count)),
                Value::count(static_cast<std::int64_t>(a.calls - a.same_point_count)),
@@ -79,7 +79,7 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results,
   const std::size_t backends = results.empty() ? 0 : results.front().runners.size() - 1;
   dir.write("streams.dat", [&](std::ostream& o) {
     o << "# scene";
-    for (std::size_t k = 0; k < backends; ++k) o << ' ' << results.front().runners[k].runner;
+    for (std::size_t k = 0; k < backends; ++k) o << ' ' << scenes::name(results.front().runners[k].runner);
     o << " (ratio of ns per call to box2d-own)\n";
     for (const StreamResult& r : results) {
       std::vector<double> ratios;
@@ -97,7 +97,7 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results,
             "plot ";
   for (std::size_t k = 0; k < backends; ++k) {
     script << (k ? ", \\\n     " : "") << dir.quoted("streams.dat") << " using " << k + 2
-           << (k == 0 ? ":xtic(1)" : "") << " title '" << results.front().runners[k].runner << "'";
+           << (k == 0 ? ":xtic(1)" : "") << " title '" << scenes::name(results.front().runners[k].runner) << "'";
   }
   script << "\n";
   if (backends > 0) dir.chart("streams", "svg size 1100,500 dynamic background rgb 'white'", script.str());

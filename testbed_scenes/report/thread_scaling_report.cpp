@@ -16,7 +16,7 @@ Records thread_scaling_records(const std::vector<ThreadScalingRecord>& records) 
                {"steps_per_second", "steps per second", "steps/s", 12},
                {"ratio_vs_own", "× own", "x_own", 8}});
   for (const ThreadScalingRecord& r : records) {
-    out.add({Value::text(r.runner), Value::count(r.threads), Value::count(r.steps),
+    out.add({Value::text(scenes::name(r.runner)), Value::count(r.threads), Value::count(r.steps),
              Value::number(r.seconds, "%.3f"), Value::number(r.steps_per_second, "%.0f"),
              Value::number(r.ratio_vs_own, "%.3f")});
   }

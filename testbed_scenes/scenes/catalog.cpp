@@ -83,7 +83,6 @@ const SceneInfo* find_scene(std::string_view name) {
   return e ? &e->info : nullptr;
 }
 
-const char* name(const Runner& runner) { return runner ? box2d::name(*runner) : box2d_own; }
 
 std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, std::uint64_t seed,
                                   const box2d::Config& skips) {

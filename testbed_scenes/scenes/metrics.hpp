@@ -15,6 +15,7 @@
 
 #include "dyop/box2d.hpp"
 #include "dyop/result.hpp"
+#include "scenes/runner.hpp"
 
 namespace dyop::scenes {
 
@@ -49,12 +50,12 @@ struct SlideFigures {
 /// `sliders` with their sliding ones' largest speeds and smallest travel.
 SlideFigures summarize_sliders(std::vector<SliderFigures> sliders);
 
-/// The figures of one scene run under one backend.
+/// The figures of one scene run under one runner.
 struct SceneMetrics {
-  std::string scene;       ///< scene name
-  /// Backend name ("dyop", ..., "box2d"), or `box2d_own` for a Box2D scene run with the plug-in
-  /// not installed (Box2D's own contact answers every pair).
-  std::string backend;
+  std::string scene;  ///< scene name
+  /// What answered the pairs: a backend, or nothing for a Box2D scene run with the plug-in not
+  /// installed (Box2D's own contact answers every pair; spelt `box2d_own`).
+  Runner runner;
   std::uint64_t seed = 0;  ///< the seed the scene was built with
   int steps = 0;           ///< steps run
   int bodies = 0;          ///< bodies (static and kinematic ones included)
@@ -81,11 +82,11 @@ struct SceneMetrics {
   std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
   double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
   /// Wall time of all the measured steps together (ms): Box2D scenes, `b2World::Step` in steps
-  /// 2..N (what a user of the world waits for); paper, the backend's calls.
+  /// 2..N (what a user of the world waits for); paper, the runner's calls.
   double step_ms_total = 0;
   /// Narrow-phase time over the measured steps (ms): Box2D scenes, the sum of
   /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);
-  /// paper, the time of the backend's calls.
+  /// paper, the time of the runner's calls.
   double narrowphase_ms_total = 0;
   /// `narrowphase_ms_total` per contact update (ns). Box2D scenes: includes Box2D's own per-contact
   /// work around the call (the broad-phase overlap test, manifold bookkeeping, warm-start match).
@@ -93,14 +94,14 @@ struct SceneMetrics {
   /// Deepest exact penetration over the touching triangle pairs after each step (m).
   double max_penetration = 0;
   double mean_penetration = 0;  ///< mean of the same over every (pair, step) sample (m)
-  /// Largest |backend depth − exact depth| over the pairs the backend evaluated (m).
+  /// Largest |backend depth − exact depth| over the pairs the runner evaluated (m).
   double pd_error_max = 0;
   /// Mean of the same over the evaluated pairs that penetrate by either account (m).
   double pd_error_mean = 0;
-  /// Evaluated pairs that the backend called penetrating while exactly apart by more than the
+  /// Evaluated pairs that the runner called penetrating while exactly apart by more than the
   /// touching band, or not penetrating while exactly deeper than it.
   std::uint64_t misclassified = 0;
-  std::uint64_t invalid = 0;        ///< evaluated pairs the backend answered `Invalid`
+  std::uint64_t invalid = 0;        ///< evaluated pairs the runner answered `Invalid`
   double kinetic_energy_final = 0;  ///< Σ ½mv² + ½Iω² of the moving bodies after the last step (J)
   /// Scenes that should stand (pyramids, stacks): largest distance of a top body from where it
   /// was after the first second (`settle_steps`), over the rest of the run (m); `slide`: the
@@ -116,7 +117,7 @@ struct SceneMetrics {
 /// Backend depths against exact ones, pair by pair.
 class ErrorTally {
  public:
-  /// One evaluated pair: the backend's answer (`depth` ≥ 0, as `Result::depth`), the exact signed
+  /// One evaluated pair: the runner's answer (`depth` ≥ 0, as `Result::depth`), the exact signed
   /// separation, and the touching band (length) inside which either classification is right.
   void add(Status status, double depth, double exact_separation, double band);
   double max() const { return max_; }

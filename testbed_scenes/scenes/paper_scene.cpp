@@ -41,7 +41,7 @@ class PaperScene : public Scene {
   SceneMetrics metrics() const override {
     SceneMetrics m;
     m.scene = "paper";
-    m.backend = box2d::name(backend_);
+    m.runner = backend_;
     m.seed = seed_;
     m.steps = steps_;
     m.bodies = type_count;

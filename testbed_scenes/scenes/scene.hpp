@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
-#include "adapters/narrow_phase.hpp"
 #include "dyop/box2d.hpp"
 #include "scenes/metrics.hpp"
+#include "scenes/runner.hpp"
 #include "scenes/skips.hpp"
 #include "scenes/drawing.hpp"
 
@@ -51,26 +51,6 @@ const std::vector<SceneInfo>& scene_catalog();
 
 /// The scene called `name`, or nullptr.
 const SceneInfo* find_scene(std::string_view name);
-
-/// The name of Box2D's own contact with the plug-in not installed, the reference of every
-/// in-world ratio: in tables, CSV and JSON wherever a backend name stands.
-inline constexpr const char* box2d_own = "box2d-own";
-
-/// What answers a Box2D scene's polygon pairs: a backend of the plug-in, or nothing: Box2D's own
-/// contact, the plug-in not installed (`box2d_own`).
-using Runner = std::optional<box2d::Backend>;
-
-/// `box2d::name(*runner)`, or `box2d_own`.
-const char* name(const Runner& runner);
-
-/// A backend as the testbed runs it on single pairs (depth checks, the paper scene): its method,
-/// warm-started where it keeps state as the plug-in runs it (one state per contact), or Box2D's
-/// `b2CollidePolygons` for `Backend::Box2D`.
-inline adapters::NarrowPhase narrow_phase_of(box2d::Backend backend) {
-  const std::optional<Method> m = box2d::method_of(backend);
-  return m ? adapters::NarrowPhase{Variant{*m, box2d::warm_start(backend)}}
-           : adapters::NarrowPhase::box2d();
-}
 
 /// Creates scene `name` for `runner` and `seed`, with the skips `skips` (Box2D scenes; ignored by
 /// Box2D's own contact). Throws `std::invalid_argument` for an unknown name, and for the `paper`

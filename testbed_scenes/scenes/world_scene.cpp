@@ -85,7 +85,7 @@ void WorldScene::step() {
 SceneMetrics WorldScene::metrics() const {
   SceneMetrics m;
   m.scene = name_;
-  m.backend = name(runner_);
+  m.runner = runner_;
   m.seed = seed_;
   m.steps = steps_;
   for (const b2Body* b : world_->bodies()) {

@@ -54,19 +54,19 @@ TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2dAndToBox2DsOwnCont
   // Every backend, and Box2D's own contact (the plug-in not installed), at each size.
   ASSERT_EQ(records.size(), 2 * (std::size(box2d::all_backends) + 1));
   for (const ScalingRecord& r : records) {
-    SCOPED_TRACE(r.backend + " " + std::to_string(r.falling));
+    SCOPED_TRACE(std::string(name(r.runner)) + " " + std::to_string(r.falling));
     EXPECT_EQ(r.steps, options.steps);
     EXPECT_GT(r.step_ms_median, 0);
     EXPECT_GT(r.narrowphase_ms_per_step, 0);
     EXPECT_GT(r.pairs_per_step, 0);
     EXPECT_EQ(r.fallbacks, 0u);
     EXPECT_FALSE(r.nan_detected);
-    if (r.backend == "box2d") {
+    if (r.runner == box2d::Backend::Box2D) {
       EXPECT_EQ(r.ratio_vs_box2d, 1.0);
     } else {
       EXPECT_GT(r.ratio_vs_box2d, 0);
     }
-    if (r.backend == box2d_own) {
+    if (!r.runner) {
       EXPECT_EQ(r.ratio_vs_own, 1.0);
       EXPECT_EQ(r.step_ratio_vs_own, 1.0);
     } else {
@@ -75,7 +75,7 @@ TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2dAndToBox2DsOwnCont
     }
   }
   EXPECT_EQ(std::count_if(records.begin(), records.end(),
-                          [](const ScalingRecord& r) { return r.backend == box2d_own; }),
+                          [](const ScalingRecord& r) { return !r.runner; }),
             2)
       << "one record of Box2D's own contact per size";
   EXPECT_NE(progress.str().find("rain 60 triangles, epa"), std::string::npos);

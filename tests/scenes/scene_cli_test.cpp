@@ -44,30 +44,30 @@ Outcome run(const std::string& args) {
 }
 
 TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
-  const Outcome scene = run("scene nope --backend dyop");
+  const Outcome scene = run("scene nope --runner dyop");
   EXPECT_EQ(scene.status, 1);
   EXPECT_NE(scene.err.find("nope"), std::string::npos) << scene.err;
-  const Outcome backend = run("scene pyramid --backend nope");
+  const Outcome backend = run("scene pyramid --runner nope");
   EXPECT_EQ(backend.status, 1);
   EXPECT_NE(backend.err.find("nope"), std::string::npos) << backend.err;
-  EXPECT_EQ(run("scene pyramid").status, 1) << "--backend is required";
-  EXPECT_EQ(run("scene pyramid --backend dyop --steps 0").status, 1);
-  EXPECT_EQ(run("scene pyramid --backend dyop --json - --svg -").status, 1);
+  EXPECT_EQ(run("scene pyramid").status, 1) << "--runner is required";
+  EXPECT_EQ(run("scene pyramid --runner dyop --steps 0").status, 1);
+  EXPECT_EQ(run("scene pyramid --runner dyop --json - --svg -").status, 1);
   EXPECT_EQ(run("compare --scene nope").status, 1);
 }
 
 TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
-  const Outcome list = run("scene rain --backend dyop --steps 3 --skip warm-axis,bounds --json -");
+  const Outcome list = run("scene rain --runner dyop --steps 3 --skip warm-axis,bounds --json -");
   ASSERT_EQ(list.status, 0) << list.err;
   const nlohmann::json j = nlohmann::json::parse(list.out);
   EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "warm-axis"}));
   ASSERT_TRUE(j["skips"].is_object());
   EXPECT_TRUE(j["skips"].contains("warm-axis"));
   EXPECT_NE(list.err.find("skips bounds,warm-axis"), std::string::npos) << list.err;
-  EXPECT_EQ(run("scene stack --backend sat --steps 2 --skip none").status, 0);
-  EXPECT_EQ(run("scene paper --backend dyop --steps 2 --skip all").status, 0)
+  EXPECT_EQ(run("scene stack --runner sat --steps 2 --skip none").status, 0);
+  EXPECT_EQ(run("scene paper --runner dyop --steps 2 --skip all").status, 0)
       << "accepted, and ignored: no Box2D world";
-  for (const std::string command : {"scene stack --backend dyop --steps 2 --skip bounds,nope",
+  for (const std::string command : {"scene stack --runner dyop --steps 2 --skip bounds,nope",
                                     "compare --quick --steps 1 --skip nope"}) {
     const Outcome bad = run(command);
     EXPECT_EQ(bad.status, 1) << command;
@@ -76,13 +76,13 @@ TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
 }
 
 TEST(SceneCli, Box2DsOwnContactRunsBox2DScenesWithoutPlugInCounters) {
-  const Outcome own = run("scene stack --backend box2d-own --steps 30 --json -");
+  const Outcome own = run("scene stack --runner box2d-own --steps 30 --json -");
   ASSERT_EQ(own.status, 0) << own.err;
   const nlohmann::json j = nlohmann::json::parse(own.out);
-  EXPECT_EQ(j["backend"], "box2d-own");
+  EXPECT_EQ(j["runner"], "box2d-own");
   EXPECT_TRUE(j["plugin_evaluations"].is_null());
   EXPECT_TRUE(j["skips"].is_null());
-  const Outcome paper = run("scene paper --backend box2d-own --steps 2");
+  const Outcome paper = run("scene paper --runner box2d-own --steps 2");
   EXPECT_EQ(paper.status, 1) << "no Box2D world to leave the plug-in out of";
   EXPECT_NE(paper.err.find("paper"), std::string::npos) << paper.err;
 }
@@ -92,10 +92,10 @@ TEST(SceneCli, UnwritableOutputIsAnIoError) {
   const auto dir = temp_dir("unwritable");
   std::ofstream(dir / "file") << "x";
   const std::string bad = (dir / "file" / "out.json").string();
-  const Outcome json = run("scene stack --backend dyop --steps 2 --json " + bad);
+  const Outcome json = run("scene stack --runner dyop --steps 2 --json " + bad);
   EXPECT_EQ(json.status, 2);
   EXPECT_NE(json.err.find("cannot write"), std::string::npos) << json.err;
-  EXPECT_EQ(run("scene stack --backend dyop --steps 2 --svg " + bad).status, 2);
+  EXPECT_EQ(run("scene stack --runner dyop --steps 2 --svg " + bad).status, 2);
   const Outcome compare =
       run("compare --quick --steps 1 --out " + (dir / "file" / "report").string());
   EXPECT_EQ(compare.status, 2);
@@ -103,18 +103,18 @@ TEST(SceneCli, UnwritableOutputIsAnIoError) {
 }
 
 TEST(SceneCli, JsonToStandardOutputIsOneValidObjectAndTheSummaryGoesToStandardError) {
-  const Outcome r = run("scene mixed --backend sat --steps 20 --seed 3 --json -");
+  const Outcome r = run("scene mixed --runner sat --steps 20 --seed 3 --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["scene"], "mixed");
-  EXPECT_EQ(j["backend"], "sat");
+  EXPECT_EQ(j["runner"], "sat");
   EXPECT_EQ(j["seed"], 3);
   EXPECT_NE(r.err.find("scene mixed / sat"), std::string::npos) << r.err;
 }
 
 TEST(SceneCli, WritesTheSummaryAndTheFiles) {
   const auto dir = temp_dir("files");
-  const Outcome r = run("scene paper --backend box2d --steps 10 --json " +
+  const Outcome r = run("scene paper --runner box2d --steps 10 --json " +
                         (dir / "m.json").string() + " --svg " + (dir / "s.svg").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("scene paper / box2d"), std::string::npos) << r.out;
@@ -132,7 +132,7 @@ TEST(SceneCli, WritesTheSummaryAndTheFiles) {
 }
 
 TEST(SceneCli, SvgToStandardOutput) {
-  const Outcome r = run("scene stack --backend box2d --steps 2 --svg -");
+  const Outcome r = run("scene stack --runner box2d --steps 2 --svg -");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("<?xml", 0), 0u);
   EXPECT_NE(r.out.find("<polygon"), std::string::npos);

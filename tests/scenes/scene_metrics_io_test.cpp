@@ -26,7 +26,7 @@ TEST(MetricsJson, HasEveryKeyTheIssueAsksForWithItsType) {
   const nlohmann::json j = json_of(run_scene("stack", box2d::Backend::Dyop, 70, 5));
   ASSERT_TRUE(j.is_object());
   for (const char* key :
-       {"scene", "backend", "steps", "bodies", "triangle_pairs", "step_ms_median",
+       {"scene", "runner", "steps", "bodies", "triangle_pairs", "step_ms_median",
         "narrowphase_ns_per_pair", "max_penetration", "mean_penetration", "pd_error_max",
         "pd_error_mean", "kinetic_energy_final", "nan_detected", "hash"}) {
     EXPECT_TRUE(j.contains(key)) << key;
@@ -34,7 +34,7 @@ TEST(MetricsJson, HasEveryKeyTheIssueAsksForWithItsType) {
   for (const std::string& key : metrics_keys()) EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j.size(), metrics_keys().size());
   EXPECT_EQ(j["scene"], "stack");
-  EXPECT_EQ(j["backend"], "dyop");
+  EXPECT_EQ(j["runner"], "dyop");
   EXPECT_EQ(j["steps"], 70);
   EXPECT_TRUE(j["bodies"].is_number_integer());
   EXPECT_TRUE(j["triangle_pairs"].is_number_unsigned());
@@ -57,7 +57,7 @@ TEST(MetricsJson, PaperHasNullsWhereTheFigureDoesNotApply) {
 TEST(MetricsJson, NonFiniteNumbersAreNullAndFlagged) {
   SceneMetrics m;
   m.scene = "x";
-  m.backend = "dyop";
+  m.runner = box2d::Backend::Dyop;
   m.max_penetration = std::numeric_limits<double>::quiet_NaN();
   m.kinetic_energy_final = std::numeric_limits<double>::infinity();
   const nlohmann::json j = json_of(m);

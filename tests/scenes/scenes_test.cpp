@@ -23,7 +23,7 @@ TEST_P(EveryScene, RunsWithoutNaNAndWithoutFallbacks) {
   const auto& [name, backend] = GetParam();
   const SceneMetrics m = run_scene(name, backend, kSteps, 7);
   EXPECT_EQ(m.scene, name);
-  EXPECT_EQ(m.backend, box2d::name(backend));
+  EXPECT_EQ(m.runner, Runner{backend});
   EXPECT_EQ(m.steps, kSteps);
   EXPECT_FALSE(m.nan_detected);
   EXPECT_TRUE(all_finite(m));
@@ -36,7 +36,7 @@ TEST_P(EveryScene, RunsWithoutNaNAndWithoutFallbacks) {
     EXPECT_GT(m.triangle_pairs, 0u);
   } else {
     ASSERT_TRUE(m.fallbacks.has_value());
-    EXPECT_EQ(*m.fallbacks, 0u) << "pairs answered by Box2D instead of " << m.backend;
+    EXPECT_EQ(*m.fallbacks, 0u) << "pairs answered by Box2D instead of " << scenes::name(m.runner);
     ASSERT_TRUE(m.plugin_evaluations.has_value());
     EXPECT_LE(m.triangle_pairs, *m.plugin_evaluations);
   }

@@ -33,7 +33,7 @@ TEST(ThreadScaling, GivesOneFinitePositiveRecordPerRunnerAndThreadCount) {
   for (int k = 0; k < 4; ++k) {
     const ThreadScalingRecord& r = records[static_cast<std::size_t>(k)];
     EXPECT_EQ(r.threads, k < 2 ? 1 : 2);
-    EXPECT_EQ(r.runner, k % 2 == 0 ? box2d_own : "dyop");
+    EXPECT_EQ(r.runner, k % 2 == 0 ? Runner{} : Runner{box2d::Backend::Dyop});
     EXPECT_EQ(r.steps, 5);
     EXPECT_TRUE(std::isfinite(r.seconds) && r.seconds > 0);
     EXPECT_NEAR(r.steps_per_second, r.threads * r.steps / r.seconds, 1e-9 * r.steps_per_second);
