@@ -7,7 +7,7 @@
 
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
-#include "experiments/bench_runners.hpp"
+#include "experiments/pair_timing.hpp"
 
 namespace dyop::experiments {
 namespace {

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/stress_runners.hpp"
+#include "experiments/stress_answers.hpp"
 #include "workloads/input_classes.hpp"
 
 namespace dyop::experiments {

@@ -9,9 +9,7 @@
 #include "report/bench_report.hpp"
 #include "report/output.hpp"
 #ifdef DYOP_WITH_BOX2D
-#include "report/rain_scaling_report.hpp"
-#include "report/stream_report.hpp"
-#include "report/thread_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 #endif
 
 namespace dyop::cli {

@@ -2,7 +2,7 @@
 // threads, the plug-in against Box2D's own contact (`experiments/thread_scaling.hpp`), as in
 // `dyop bench`.
 #include "report/compare_section.hpp"
-#include "report/thread_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 
 namespace dyop::report {
 namespace {

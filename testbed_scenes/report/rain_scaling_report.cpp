@@ -1,4 +1,4 @@
-#include "report/rain_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -81,57 +81,55 @@ void Records::add(std::vector<Value> row) {
 namespace {
 
 // `s` padded to `width` characters (negative: on the right, as printf's "%-Ns").
-void write_cell(std::ostream& out, const std::string& s, int width) {
+std::string padded(const std::string& s, int width) {
   const std::size_t w = static_cast<std::size_t>(std::abs(width));
   const std::string pad = s.size() < w ? std::string(w - s.size(), ' ') : std::string();
-  out << (width < 0 ? s + pad : pad + s);
+  return width < 0 ? s + pad : pad + s;
 }
 
 }  // namespace
 
-void Records::write_table(std::ostream& out) const {
-  auto line = [&](auto cell) {
+template <class Cell>
+void Records::write_lines(std::ostream& out, const Layout& layout, Cell cell) const {
+  auto line = [&](const std::vector<Value>* row) {
+    out << layout.open;
     bool first = true;
     for (std::size_t c = 0; c < columns_.size(); ++c) {
-      if (!(columns_[c].where & where::table)) continue;
-      if (!first) out << ' ';
+      if (!(columns_[c].where & layout.where)) continue;
+      if (!first) out << layout.separator;
       first = false;
-      write_cell(out, cell(c), columns_[c].width);
+      out << cell(columns_[c], row != nullptr ? &(*row)[c] : nullptr);
+    }
+    out << layout.close << '\n';
+  };
+  line(nullptr);
+  if (layout.rule) {
+    out << '|';
+    for (const Column& column : columns_) {
+      if (column.where & layout.where) out << "---|";
     }
     out << '\n';
-  };
-  line([&](std::size_t c) {
-    return columns_[c].abbreviation.empty() ? columns_[c].key : columns_[c].abbreviation;
+  }
+  for (const auto& row : rows_) line(&row);
+}
+
+void Records::write_table(std::ostream& out) const {
+  write_lines(out, {where::table, "", " ", "", false}, [](const Column& c, const Value* v) {
+    const std::string& heading = c.abbreviation.empty() ? c.key : c.abbreviation;
+    return padded(v != nullptr ? v->displayed() : heading, c.width);
   });
-  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].displayed(); });
 }
 
 void Records::write_csv(std::ostream& out) const {
-  auto line = [&](auto cell) {
-    bool first = true;
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-      if (!(columns_[c].where & where::csv)) continue;
-      if (!first) out << ',';
-      first = false;
-      out << cell(c);
-    }
-    out << '\n';
-  };
-  line([&](std::size_t c) { return columns_[c].key; });
-  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].csv(); });
+  write_lines(out, {where::csv, "", ",", "", false}, [](const Column& c, const Value* v) {
+    return v != nullptr ? v->csv() : c.key;
+  });
 }
 
 void Records::write_markdown(std::ostream& out) const {
-  auto line = [&](auto cell) {
-    out << '|';
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-      if (columns_[c].where & where::markdown) out << ' ' << cell(c) << " |";
-    }
-    out << '\n';
-  };
-  line([&](std::size_t c) { return columns_[c].heading; });
-  line([](std::size_t) { return std::string("---"); });
-  for (const auto& row : rows_) line([&](std::size_t c) { return row[c].displayed(); });
+  write_lines(out, {where::markdown, "| ", " | ", " |", true}, [](const Column& c, const Value* v) {
+    return v != nullptr ? v->displayed() : c.heading;
+  });
 }
 
 Json Records::json() const {

@@ -91,6 +91,20 @@ class Records {
   std::size_t size() const { return rows_.size(); }  ///< the number of records
 
  private:
+  // How one output lays a line out: the columns it writes (a `where` bit), what opens, separates
+  // and closes the cells, and whether a rule line follows the header (Markdown).
+  struct Layout {
+    unsigned where;
+    const char* open;
+    const char* separator;
+    const char* close;
+    bool rule;
+  };
+  // The header, the rule if any, then one line per record; `cell(column, value)` spells a cell
+  // (value nullptr: the header's).
+  template <class Cell>
+  void write_lines(std::ostream& out, const Layout& layout, Cell cell) const;
+
   std::vector<Column> columns_;
   std::vector<std::vector<Value>> rows_;
 };

@@ -1,4 +1,4 @@
-#include "report/stream_report.hpp"
+#include "report/bench_sections.hpp"
 
 #include <ostream>
 #include <sstream>

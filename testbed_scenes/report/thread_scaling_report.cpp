@@ -1,4 +1,4 @@
-#include "report/thread_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 
 #include <sstream>
 

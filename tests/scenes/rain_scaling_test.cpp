@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "report/rain_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {

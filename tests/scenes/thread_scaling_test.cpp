@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
-#include "report/thread_scaling_report.hpp"
+#include "report/bench_sections.hpp"
 #include "scenes/scene.hpp"
 #include "experiments/thread_scaling.hpp"
 

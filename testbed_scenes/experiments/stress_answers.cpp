@@ -1,4 +1,4 @@
-#include "experiments/stress_runners.hpp"
+#include "experiments/stress_answers.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "experiments/bench_runners.hpp"
+#include "experiments/pair_timing.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,15 +1,15 @@
 #pragma once
 /// \file
-/// What `dyop stress` runs on a set of pairs: every row of the method registry
-/// (`dyop/method.hpp`): the library's per-pair methods, the batch kernel and (float, with Box2D)
-/// Box2D's `b2CollidePolygons` through `dyop::box2d::collide_triangles`.
+/// What `dyop stress` asks of a set of pairs: the answers of a narrow phase
+/// (`adapters/narrow_phase.hpp`: the library's per-pair methods, the batch kernel and, in float
+/// with Box2D, Box2D's `b2CollidePolygons` through `dyop::box2d::collide_triangles`).
 
 #include <cstdint>
 #include <vector>
 
+#include "adapters/narrow_phase.hpp"
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
-#include "adapters/narrow_phase.hpp"
 #include "workloads/raw_pair.hpp"
 
 namespace dyop::experiments {

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// What `dyop bench` times and checks: every variant of every row of the method registry
-/// (`dyop/method.hpp`; Lin–Canny cold and warm-started, the batch kernel, Box2D's
-/// `b2CollidePolygons` in builds with Box2D), run over a prepared pair set.
+/// What `dyop bench` times and checks: every narrow phase (`adapters/narrow_phase.hpp`: each
+/// method of the registry, Lin–Canny cold and warm-started, the batch kernel, and Box2D's
+/// `b2CollidePolygons` in builds with Box2D), run over a prepared pair set: the answers, and the
+/// time per pair.
 
 #include <vector>
 
