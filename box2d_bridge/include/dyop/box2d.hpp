@@ -14,9 +14,10 @@
 /// - The manifold is `e_faceA` or `e_faceB`: `localNormal` is the reference polygon's own
 ///   `m_normals[edge]` and `localPoint` the midpoint of that face, both in the reference body's
 ///   frame; at most two `points[i].localPoint`, on the incident polygon, in the incident body's
-///   frame; `id.key` names the feature pair and stays equal from step to step while the same
-///   features touch (warm starting matches on it). The key is the library's encoding
-///   (`ManifoldPoint::key`), not `b2ContactFeature`'s: compare keys, do not read `id.cf`.
+///   frame; `id.key` names the feature pair (A's feature, B's) and stays equal from step to step
+///   while the same features touch, also when the reference face passes from one polygon to the
+///   other (warm starting matches on it, and Box2D's ids survive such flips too). The key is the
+///   library's encoding (`ManifoldPoint::key`): compare keys, do not read `id.cf`.
 /// - Points are reported up to a separation of `m_radius` of A + `m_radius` of B (the skins, so
 ///   contacts are speculative and Box2D's TOI works), on side planes extended by the same amount,
 ///   and B's face is the reference only when it beats A's by more than `face_hysteresis`, as in

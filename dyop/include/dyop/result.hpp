@@ -142,10 +142,12 @@ struct ManifoldPoint {
   Vec2<T> point = Vec2<T>::Zero();  ///< world; on the incident triangle's edge (after clipping)
   T separation = 0;  ///< signed distance from the reference face line, negative when penetrating
   /// Feature pair that made the point, stable from frame to frame while the same features touch
-  /// (warm starting matches on it). It encodes which triangle holds the reference face, the
-  /// caller's index of the reference edge, the caller's index of the incident vertex (point not
-  /// clipped) or incident edge (point clipped), and which end of the reference face clipped the
-  /// point (none, start or end). Compare keys for equality only; the layout is not part of the API.
+  /// (warm starting matches on it): A's feature and B's (caller's indices), whichever triangle
+  /// holds the reference face. A point not clipped is the reference edge against the incident
+  /// vertex; a clipped point is the end vertex of the reference face whose side line cut it
+  /// against the incident edge. So the key survives a change of reference face between the two
+  /// triangles, as Box2D's contact ids do. Compare keys for equality only; the layout is not part
+  /// of the API.
   std::uint32_t key = 0;
 };
 
