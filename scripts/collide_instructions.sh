@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Deterministic in-world figures: instructions (callgrind) of Box2D's narrow phase
-# (b2ContactManager::Collide) and of the whole step (b2World::Step), inclusive, for scenes run
-# under Box2D's own contact (the plug-in not installed) and under each backend given. Instruction
-# counts do not move with the load of a shared machine as wall time does; they ignore cache misses
-# and mispredictions (callgrind's branch simulation counts the latter: --branch-sim=yes).
+# (b2ContactManager::Collide), of its time-of-impact pass (b2World::SolveTOI) and of the whole step
+# (b2World::Step), inclusive, and the time-of-impact work counted in calls (b2TimeOfImpact calls,
+# and contact updates made by SolveTOI: one per time-of-impact event, plus one per contact it
+# re-checks), for scenes run under Box2D's own contact (the plug-in not installed) and under each
+# backend given. Instruction counts do not move with the load of a shared machine as wall time
+# does; they ignore cache misses and mispredictions (callgrind's simulations count those:
+# CALLGRIND_FLAGS="--cache-sim=yes --branch-sim=yes").
 #   scripts/collide_instructions.sh [STEPS] [SCENE...]   (defaults: 150 steps; pyramid
-#   stack-concave rain tumbler); BACKENDS (default "dyop") names the backends (runners beside box2d-own).
+#   stack-concave rain rain-tall tumbler); BACKENDS (default "dyop") names the backends run beside
+#   box2d-own. Columns: instructions and their ratio to box2d-own (x_own).
 # Needs valgrind and a built tree (build/bin/dyop). The scene's probe (depth errors, untimed) runs
 # outside Step and is not counted.
 set -euo pipefail
@@ -14,26 +18,51 @@ command -v valgrind >/dev/null || { echo "collide_instructions: valgrind not fou
 steps="${1:-150}"
 shift || true
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(pyramid stack-concave rain tumbler)
+[ ${#scenes[@]} -gt 0 ] || scenes=(pyramid stack-concave rain rain-tall tumbler)
 backends=(${BACKENDS:-dyop})
 out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
 inclusive() {  # file function-pattern -> instructions (reads all: no SIGPIPE under pipefail)
   callgrind_annotate --inclusive=yes "$1" 2>/dev/null |
     awk -v pattern="$2" '!found && $0 ~ pattern { gsub(",", "", $1); print $1; found = 1 }'
 }
-printf '%-14s %-10s %14s %8s %14s %8s\n' scene backend collide_Ir x_own step_Ir x_own
+toi_calls() {  # file -> "b2TimeOfImpact-calls SolveTOI-contact-updates", from the call records
+  awk '
+    function resolve(spec,   id) {  # "(id) name" defines a compressed name, "(id)" reuses it
+      if (match(spec, /^\([0-9]+\)/)) {
+        id = substr(spec, 2, RLENGTH - 2)
+        if (length(spec) > RLENGTH) names[id] = substr(spec, RLENGTH + 2)
+        return names[id]
+      }
+      return spec
+    }
+    /^fn=/ { caller = resolve(substr($0, 4)) }
+    /^cfn=/ { callee = resolve(substr($0, 5)) }
+    /^calls=/ {
+      split(substr($0, 7), n, " ")
+      if (callee ~ /^b2TimeOfImpact\(/) toi += n[1]
+      if (caller ~ /^b2World::SolveTOI\(/ && callee ~ /^b2Contact::Update\(/) updates += n[1]
+    }
+    END { print toi + 0, updates + 0 }' "$1"
+}
+ratio() { awk -v a="$1" -v o="$2" 'BEGIN { printf "%.3f", (o > 0 ? a / o : 0) }'; }
+printf '%-14s %-10s %14s %7s %14s %7s %14s %7s %10s %9s\n' scene runner collide_Ir x_own \
+  solve_toi_Ir x_own step_Ir x_own toi_calls toi_upd
 for scene in "${scenes[@]}"; do
-  declare -A collide=() step=()
+  declare -A collide=() toi=() step=()
   for b in box2d-own "${backends[@]}"; do
     f="$out/$scene.$b.out"
-    valgrind --tool=callgrind --callgrind-out-file="$f" \
+    # shellcheck disable=SC2086  # CALLGRIND_FLAGS is a list of flags
+    valgrind --tool=callgrind ${CALLGRIND_FLAGS:-} --callgrind-out-file="$f" \
       build/bin/dyop scene "$scene" --runner "$b" --steps "$steps" >/dev/null 2>&1
     collide[$b]=$(inclusive "$f" 'b2ContactManager::Collide\(\)')
+    toi[$b]=$(inclusive "$f" 'b2World::SolveTOI\(')
     step[$b]=$(inclusive "$f" 'b2World::Step\(')
-    printf '%-14s %-10s %14s %8s %14s %8s\n' "$scene" "$b" "${collide[$b]}" \
-      "$(awk -v a="${collide[$b]}" -v o="${collide[box2d-own]}" 'BEGIN{printf "%.3f", a/o}')" \
-      "${step[$b]}" "$(awk -v a="${step[$b]}" -v o="${step[box2d-own]}" 'BEGIN{printf "%.3f", a/o}')"
+    read -r calls updates < <(toi_calls "$f")
+    printf '%-14s %-10s %14s %7s %14s %7s %14s %7s %10s %9s\n' "$scene" "$b" "${collide[$b]}" \
+      "$(ratio "${collide[$b]}" "${collide[box2d-own]}")" "${toi[$b]:-0}" \
+      "$(ratio "${toi[$b]:-0}" "${toi[box2d-own]:-0}")" "${step[$b]}" \
+      "$(ratio "${step[$b]}" "${step[box2d-own]}")" "$calls" "$updates"
   done
-  unset collide step
+  unset collide toi step
 done
-rm -rf "$out"

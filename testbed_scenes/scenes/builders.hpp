@@ -16,6 +16,8 @@ WorldBuild build_stack_concave(World& world, workloads::Random& rng);
 WorldBuild build_rain(World& world, workloads::Random& rng);
 /// `rain` with `falling` triangles (the catalogue's has `rain_triangles`).
 WorldBuild build_rain_of(World& world, workloads::Random& rng, int falling);
+/// `rain` with `tall_rain_triangles`: a grid 39 columns wide and 39 rows tall.
+WorldBuild build_rain_tall(World& world, workloads::Random& rng);
 WorldBuild build_tumbler(World& world, workloads::Random& rng);
 WorldBuild build_slivers(World& world, workloads::Random& rng);
 WorldBuild build_slivers_far(World& world, workloads::Random& rng);

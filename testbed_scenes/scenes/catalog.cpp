@@ -33,6 +33,11 @@ const std::vector<Entry>& entries() {
        detail::build_stack_concave},
       {{"rain", "500 triangles of mixed sizes falling into a bin of triangle fixtures", 900, 300},
        detail::build_rain},
+      {{"rain-tall",
+        "1,500 triangles falling from up to 40 m into a bin of triangle fixtures: fast impacts, "
+        "time of impact at work",
+        250, 150},
+       detail::build_rain_tall},
       {{"tumbler", "300 triangles in a kinematic drum of triangle fixtures turning at 0.3 rad/s",
         900, 300},
        detail::build_tumbler},

@@ -29,4 +29,8 @@ WorldBuild build_rain(World& world, workloads::Random& rng) {
   return build_rain_of(world, rng, rain_triangles);
 }
 
+WorldBuild build_rain_tall(World& world, workloads::Random& rng) {
+  return build_rain_of(world, rng, tall_rain_triangles);
+}
+
 }  // namespace dyop::scenes::detail
