@@ -4,5 +4,5 @@
 # SVG charts) in reports/compare/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh dyop_executable  # the program only; the tests are built by test.sh
 build/bin/dyop compare --quick --out reports/compare

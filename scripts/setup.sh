@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Installs whatever Debian 12 packages the project needs and are missing, then configures and
-# builds the Release tree in build/. Called by main.sh and test.sh; safe to run again.
+# builds the Release tree in build/: the targets named (`bash scripts/setup.sh dyop_executable`),
+# or everything. Called by main.sh (the `dyop` program only) and test.sh (everything); safe to run
+# again. The build's own output goes to build/build.log; standard error gets one progress line
+# per tenth of the build, and the log's end if the build fails. Standard output stays free for
+# the tables of the command that follows.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,9 +18,32 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}" >&2
   if [ "$(id -u)" -eq 0 ]; then sudo_cmd=(); else sudo_cmd=(sudo); fi
-  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get update -qq >&2
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+mkdir -p build
+log=build/build.log
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+echo "setup: configuring and building ${*:-everything} (Release; log: $log)" >&2
+start=$SECONDS
+if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release &&
+       cmake --build build -j"$(nproc)" "${targets[@]}"; } > "$log" 2>&1 < /dev/null; then
+  echo "setup: the build failed; the end of $log:" >&2
+  tail -n 40 "$log" >&2
+  exit 1
+fi &
+build_pid=$!
+# Progress: the build's percentage, each time it passes another tenth.
+shown=-10
+while kill -0 "$build_pid" 2>/dev/null; do
+  pct=$(grep -o '^\[ *[0-9]*%\]' "$log" 2>/dev/null | tail -n 1 | tr -dc '0-9' || true)
+  if [ -n "$pct" ] && [ "$pct" -ge $((shown + 10)) ]; then
+    shown=$pct
+    echo "setup: build ${pct}% ($((SECONDS - start)) s)" >&2
+  fi
+  sleep 2
+done
+wait "$build_pid"
+echo "setup: built in $((SECONDS - start)) s" >&2

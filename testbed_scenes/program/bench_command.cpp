@@ -7,6 +7,7 @@
 
 #include "program/commands.hpp"
 #include "report/bench_report.hpp"
+#include "report/machine.hpp"
 #include "report/output.hpp"
 #ifdef DYOP_WITH_BOX2D
 #include "report/bench_sections.hpp"
@@ -45,6 +46,7 @@ int run(const BenchArgs& args) {
   // With `--json -` standard output carries the JSON alone; the tables go to standard error.
   std::ostream& tables = args.json == "-" ? std::cerr : std::cout;
   const std::vector<experiments::BenchRecord> records = experiments::run_bench(options, std::cerr);
+  tables << "Measured on " << report::machine_description() << ":\n";
   report::bench_records(records).write_table(tables);
   std::string sections;  // the report's scaling and streams sections
   // Created before the sections write into it; when it cannot be, its first problem says so.

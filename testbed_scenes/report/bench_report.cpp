@@ -7,6 +7,7 @@
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 #include "report/json.hpp"
+#include "report/machine.hpp"
 
 namespace dyop::report {
 namespace {
@@ -105,7 +106,10 @@ void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir
          "precision. Times are medians over timed passes of 8192 distinct pairs; `xbox2d` is the "
          "ratio to Box2D's `b2CollidePolygons` (full manifold, float) on the same class in the "
          "same run. Errors are |depth − exact depth| / pair size against the exact rational "
-         "reference.\n\n![time against error](time_vs_error.svg)\n\n";
+         "reference. Measured on "
+      << machine_description()
+      << ": ratios move between hosts of one machine kind (AVX-512 or not), so name the CPU "
+         "beside any figure taken from here.\n\n![time against error](time_vs_error.svg)\n\n";
     described.write_markdown(o);
     if (!sections.empty()) o << '\n' << sections;
   });
