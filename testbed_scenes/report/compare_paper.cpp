@@ -6,6 +6,7 @@
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
+#include "report/records.hpp"
 #include "experiments/paper_experiment.hpp"
 #include "experiments/progress.hpp"
 
@@ -40,7 +41,9 @@ class PaperSection : public CompareSection {
 
   void write_files(ReportDirectory& dir, Charts& charts) const override {
     dir.write("paper_figure7.csv", [&](std::ostream& o) { figure7_data(o, ','); });
-    dir.write("paper_methods.csv", [&](std::ostream& o) { methods_csv(o); });
+    dir.write("paper_methods.csv", [&](std::ostream& o) {
+      method_records(figures({Method::Dyop, false})).write_csv(o);
+    });
     dir.write("paper_figure7.dat", [&](std::ostream& o) { figure7_data(o, ' '); });
     std::ostringstream fig;
     fig << "set title 'The paper''s Figure 7 rebuilt: time to find the penetration depths of "
@@ -110,12 +113,6 @@ class PaperSection : public CompareSection {
     out << " lin-canny-warm / dyop | lin-canny-cold / dyop |\n|--:|--:|--:|";
     for (std::size_t i = 0; i < e.methods.size() + 2; ++i) out << "--:|";
     out << '\n';
-    auto figures = [&](const Variant& which) -> const experiments::paper::MethodFigures& {
-      for (const auto& m : e.methods) {
-        if (m.method == adapters::NarrowPhase{which}) return m;
-      }
-      return e.methods.front();
-    };
     const auto& dyop = figures({Method::Dyop, false});
     const auto& warm = figures({Method::LinCanny, true});
     const auto& cold = figures({Method::LinCanny, false});
@@ -132,16 +129,8 @@ class PaperSection : public CompareSection {
         << " bounding-box-overlapping pairs, " << e.pairs_penetrating
         << " of them penetrating; and all " << scenes::paper::pair_count << " pairs × " << e.steps
         << " steps without a broad phase), errors against the exact rational reference:\n\n"
-        << "| method | µs, overlapping pairs | ns/pair | × dyop | µs, all pairs | × dyop "
-           "| depth error max | depth error mean | misclassified | invalid |\n"
-        << "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-    for (const auto& m : e.methods) {
-      out << "| " << adapters::name(m.method) << " | " << fmt("%.1f", m.us_total) << " | "
-          << fmt("%.1f", m.ns_per_pair) << " | " << fmt("%.2f", m.us_total / dyop.us_total) << " | "
-          << fmt("%.1f", m.us_all_pairs) << " | " << fmt("%.2f", m.us_all_pairs / dyop.us_all_pairs)
-          << " | " << metres(m.error_max) << " | " << metres(m.error_mean) << " | " << m.misclassified
-          << " | " << m.invalid << " |\n";
-    }
+        << "\n";
+    method_records(dyop).write_markdown(out);
     out << "\nThe paper (its Figure 7): DyOP-PD 10.765 ms against Lin–Canny 23.259 ms on average "
            "over its 90 steps, Lin–Canny / DyOP = 2.16. Here, on the overlapping pairs: "
            "Lin–Canny warm-started / dyop = "
@@ -167,17 +156,45 @@ class PaperSection : public CompareSection {
     }
   }
 
-  void methods_csv(std::ostream& o) const {
-    const experiments::paper::Experiment& e = *experiment_;
-    o << "method,us_overlapping_pairs,ns_per_pair,us_all_pairs,error_max,error_mean,"
-         "misclassified,invalid,pairs_tested,pairs_penetrating,steps,repetitions\n";
-    for (const auto& m : e.methods) {
-      o << adapters::name(m.method) << ',' << fmt("%.6g", m.us_total) << ','
-        << fmt("%.6g", m.ns_per_pair) << ',' << fmt("%.6g", m.us_all_pairs) << ','
-        << fmt("%.6g", m.error_max) << ',' << fmt("%.6g", m.error_mean) << ',' << m.misclassified
-        << ',' << m.invalid << ',' << e.pairs_tested << ',' << e.pairs_penetrating << ',' << e.steps
-        << ',' << e.repetitions << '\n';
+  // The figures of `which` (the first method's when it did not run).
+  const experiments::paper::MethodFigures& figures(const Variant& which) const {
+    for (const auto& m : experiment_->methods) {
+      if (m.method == adapters::NarrowPhase{which}) return m;
     }
+    return experiment_->methods.front();
+  }
+
+  // Every method's figures over the same pairs; the ratios against `dyop` (its own figures).
+  Records method_records(const experiments::paper::MethodFigures& dyop) const {
+    const experiments::paper::Experiment& e = *experiment_;
+    const unsigned shown = where::table | where::markdown;
+    Records out({{"method", "method", "", -15},
+                 {"us_overlapping_pairs", "µs, overlapping pairs", "us", 10},
+                 {"ns_per_pair", "ns/pair", "", 8},
+                 {"ratio_vs_dyop", "× dyop", "x_dyop", 7, shown},
+                 {"us_all_pairs", "µs, all pairs", "us_all", 10},
+                 {"all_pairs_ratio_vs_dyop", "× dyop", "x_dyop", 7, shown},
+                 {"error_max", "depth error max", "err_max", 9},
+                 {"error_mean", "depth error mean", "err_mean", 9},
+                 {"misclassified", "misclassified", "miscl", 6},
+                 {"invalid", "invalid", "", 7},
+                 {"pairs_tested", "", "", 8, where::files},
+                 {"pairs_penetrating", "", "", 8, where::files},
+                 {"steps", "", "", 6, where::files},
+                 {"repetitions", "", "", 6, where::files}});
+    for (const auto& m : e.methods) {
+      out.add({Value::text(adapters::name(m.method)), Value::number(m.us_total, "%.1f"),
+               Value::number(m.ns_per_pair, "%.1f"), Value::number(m.us_total / dyop.us_total, "%.2f"),
+               Value::number(m.us_all_pairs, "%.1f"),
+               Value::number(m.us_all_pairs / dyop.us_all_pairs, "%.2f"),
+               Value::metres(m.error_max), Value::metres(m.error_mean),
+               Value::count(static_cast<std::int64_t>(m.misclassified)),
+               Value::count(static_cast<std::int64_t>(m.invalid)),
+               Value::count(static_cast<std::int64_t>(e.pairs_tested)),
+               Value::count(static_cast<std::int64_t>(e.pairs_penetrating)), Value::count(e.steps),
+               Value::count(e.repetitions)});
+    }
+    return out;
   }
 
   std::optional<experiments::paper::Experiment> experiment_;

@@ -7,6 +7,7 @@
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
+#include "report/records.hpp"
 #include "report/metrics_io.hpp"
 #include "experiments/progress.hpp"
 #include "scenes/skips.hpp"
@@ -73,7 +74,7 @@ class SkipSection : public CompareSection {
   }
 
   void write_files(ReportDirectory& dir, Charts&) const override {
-    dir.write("skips.csv", [&](std::ostream& o) { csv(o); });
+    dir.write("skips.csv", [&](std::ostream& o) { skip_records(true).write_csv(o); });
   }
 
   void write_markdown(std::ostream& o, const Charts&) const override {
@@ -178,21 +179,8 @@ class SkipSection : public CompareSection {
     const std::string on = skip_argument(skips_);
     out << "Skips `" << on << "` against `none`, run back to back (narrow phase: ns per contact "
         << "update; step: median wall time):\n\n"
-        << "| scene | backend | steps | ns/pair on | ns/pair off | on/off | step ms on | step ms off "
-           "| on/off | hashes equal | evaluations | skipped bounds | skipped warm-axis |\n"
-        << "|---|---|--:|--:|--:|--:|--:|--:|--:|---|--:|--:|--:|\n";
-    for (const SkipMeasurement& m : measurements_) {
-      const std::uint64_t of = m.on.plugin_evaluations.value_or(0);
-      out << "| " << m.on.scene << " | " << name(m.on.runner) << " | " << m.on.steps << " | "
-          << fmt("%.1f", m.on.narrowphase_ns_per_pair) << " | "
-          << fmt("%.1f", m.off.narrowphase_ns_per_pair) << " | "
-          << fmt("%.2f", narrowphase_ratio(m.on, m.off)) << " | " << fmt("%.3g", m.on.step_ms_median)
-          << " | " << fmt("%.3g", m.off.step_ms_median) << " | "
-          << fmt("%.2f", m.on.step_ms_median / m.off.step_ms_median) << " | "
-          << hashes_equal(m.on, m.off) << " | " << of << " | "
-          << skipped_share(skipped(m.on, box2d::Skip::Bounds), of) << " | "
-          << skipped_share(skipped(m.on, box2d::Skip::WarmAxis), of) << " |\n";
-    }
+        << "\n";
+    skip_records(false).write_markdown(out);
 
     bool breakdown = false;
     for (const SkipMeasurement& m : measurements_) breakdown = breakdown || !m.alone.empty();
@@ -240,35 +228,68 @@ class SkipSection : public CompareSection {
     }
   }
 
-  // One row per run with skips on (the `--skip` one, then each skip alone) against its `none` run.
-  void csv(std::ostream& o) const {
-    o << "scene,backend,steps,skips,contact_updates_on,contact_updates_off,"
-         "narrowphase_ns_per_pair_on,narrowphase_ns_per_pair_off,narrowphase_ratio,"
-         "narrowphase_ms_on,narrowphase_ms_off,step_ms_median_on,step_ms_median_off,step_ratio,"
-         "hash_on,hash_off,hashes_equal,plugin_evaluations";
-    for (int s = 0; s < box2d::skip_count; ++s) {
-      o << ",skipped_" << box2d::name(static_cast<box2d::Skip>(s));
+  // One row per run with skips on (the `--skip` one, then each skip alone when `alone`) against
+  // its `none` run: the report's table (the `--skip` runs) and `skips.csv` (all).
+  Records skip_records(bool alone) const {
+    const unsigned files = where::files;
+    const unsigned shown = where::table | where::markdown;
+    std::vector<Column> columns = {{"scene", "scene", "", -14},
+                                   {"runner", "runner", "", -10},
+                                   {"steps", "steps", "", 6},
+                                   {"skips", "skips", "", -20, files},
+                                   {"contact_updates_on", "", "", 9, files},
+                                   {"contact_updates_off", "", "", 9, files},
+                                   {"narrowphase_ns_per_pair_on", "ns/pair on", "", 9},
+                                   {"narrowphase_ns_per_pair_off", "ns/pair off", "", 9},
+                                   {"narrowphase_ratio", "on/off", "", 7},
+                                   {"narrowphase_ms_on", "", "", 9, files},
+                                   {"narrowphase_ms_off", "", "", 9, files},
+                                   {"step_ms_median_on", "step ms on", "", 9},
+                                   {"step_ms_median_off", "step ms off", "", 9},
+                                   {"step_ratio", "on/off", "", 7},
+                                   {"hash_on", "", "", 16, files},
+                                   {"hash_off", "", "", 16, files},
+                                   {"hashes_equal", "", "", 5, files},
+                                   {"hashes_equal_flagged", "hashes equal", "", 5, shown},
+                                   {"plugin_evaluations", "evaluations", "", 10}};
+    for (int k = 0; k < box2d::skip_count; ++k) {
+      const std::string why = box2d::name(static_cast<box2d::Skip>(k));
+      columns.push_back({"skipped_" + why, "", "", 9, files});
+      columns.push_back({"skipped_share_" + why, "skipped " + why, "", 12, shown});
     }
-    o << '\n';
+    Records out(std::move(columns));
     for (const SkipMeasurement& m : measurements_) {
       std::vector<const SceneMetrics*> on = {&m.on};
-      for (const SceneMetrics& a : m.alone) on.push_back(&a);
+      if (alone) {
+        for (const SceneMetrics& a : m.alone) on.push_back(&a);
+      }
       for (const SceneMetrics* r : on) {
-        // A skip list has commas: quoted, as CSV does.
-        o << r->scene << ',' << name(r->runner) << ',' << r->steps << ",\""
-          << (r->skip_config ? skip_argument(*r->skip_config) : "") << "\"," << r->contact_updates
-          << ',' << m.off.contact_updates << ',' << fmt("%.6g", r->narrowphase_ns_per_pair) << ','
-          << fmt("%.6g", m.off.narrowphase_ns_per_pair) << ','
-          << fmt("%.6g", narrowphase_ratio(*r, m.off)) << ','
-          << fmt("%.6g", r->narrowphase_ms_total) << ',' << fmt("%.6g", m.off.narrowphase_ms_total)
-          << ',' << fmt("%.6g", r->step_ms_median) << ',' << fmt("%.6g", m.off.step_ms_median)
-          << ',' << fmt("%.6g", r->step_ms_median / m.off.step_ms_median) << ','
-          << hash_hex(r->hash) << ',' << hash_hex(m.off.hash) << ','
-          << (r->hash == m.off.hash ? "true" : "false") << ',' << r->plugin_evaluations.value_or(0);
-        for (int s = 0; s < box2d::skip_count; ++s) o << ',' << (r->skips ? (*r->skips)[s] : 0);
-        o << '\n';
+        const std::uint64_t of = r->plugin_evaluations.value_or(0);
+        std::vector<Value> row = {
+            Value::text(r->scene), Value::text(name(r->runner)), Value::count(r->steps),
+            Value::text(r->skip_config ? skip_argument(*r->skip_config) : ""),
+            Value::count(static_cast<std::int64_t>(r->contact_updates)),
+            Value::count(static_cast<std::int64_t>(m.off.contact_updates)),
+            Value::number(r->narrowphase_ns_per_pair, "%.1f"),
+            Value::number(m.off.narrowphase_ns_per_pair, "%.1f"),
+            Value::number(narrowphase_ratio(*r, m.off), "%.2f"),
+            Value::number(r->narrowphase_ms_total, "%.3g"),
+            Value::number(m.off.narrowphase_ms_total, "%.3g"),
+            Value::number(r->step_ms_median, "%.3g"), Value::number(m.off.step_ms_median, "%.3g"),
+            Value::number(r->step_ms_median / m.off.step_ms_median, "%.2f"),
+            Value::text(hash_hex(r->hash)), Value::text(hash_hex(m.off.hash)),
+            Value::text(r->hash == m.off.hash ? "true" : "false"),
+            Value::text(hashes_equal(*r, m.off)),
+            Value::count(static_cast<std::int64_t>(of))};
+        for (int k = 0; k < box2d::skip_count; ++k) {
+          const std::uint64_t n = skipped(*r, static_cast<box2d::Skip>(k));
+          row.push_back(Value::count(static_cast<std::int64_t>(n)));
+          row.push_back(Value::text(skipped_share(n, of)));
+        }
+        out.add(std::move(row));
       }
     }
+    return out;
   }
 
   bool quick_ = false;

@@ -4,6 +4,7 @@
 
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
+#include "report/records.hpp"
 #include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
 #include "experiments/slide_run.hpp"
@@ -43,7 +44,7 @@ class SlideSection : public CompareSection {
   }
 
   void write_files(ReportDirectory& dir, Charts& charts) const override {
-    dir.write("slide.csv", [&](std::ostream& o) { csv(o); });
+    dir.write("slide.csv", [&](std::ostream& o) { slider_records().write_csv(o); });
     for (const SlideRun& r : runs_) {
       dir.write("slide_" + std::string(scenes::name(r.metrics.runner)) + ".svg",
                 [&](std::ostream& o) { report::write_svg(r.final_state, o); });
@@ -94,15 +95,21 @@ class SlideSection : public CompareSection {
   // Per runner, the sliding bodies' largest speeds, their smallest travel and the resting box's
   // jitter; then per slider, each runner's figures.
   void tables(std::ostream& out) const {
-    out << "| runner | largest vertical speed (m/s) | largest angular speed (rad/s) | smallest "
-           "travel | resting box jitter (m) |\n|---|--:|--:|--:|--:|\n";
+    Records summary({{"runner", "runner", "", -10},
+                     {"max_vertical_speed", "largest vertical speed (m/s)", "", 9},
+                     {"max_angular_speed", "largest angular speed (rad/s)", "", 9},
+                     {"min_travel", "smallest travel", "", 9},
+                     {"resting_jitter", "resting box jitter (m)", "", 9}});
     for (const SlideRun& r : runs_) {
       const scenes::SceneMetrics& m = r.metrics;
       if (!m.slide) continue;
-      out << "| " << scenes::name(m.runner) << " | " << fmt("%.4f", m.slide->max_vertical_speed) << " | "
-          << fmt("%.4f", m.slide->max_angular_speed) << " | " << percent(m.slide->min_travel)
-          << " | " << (m.top_displacement ? metres(*m.top_displacement) : "n/a") << " |\n";
+      summary.add({Value::text(scenes::name(m.runner)),
+                   Value::number(m.slide->max_vertical_speed, "%.4f"),
+                   Value::number(m.slide->max_angular_speed, "%.4f"),
+                   Value::text(percent(m.slide->min_travel)),
+                   m.top_displacement ? Value::metres(*m.top_displacement) : Value::text("n/a")});
     }
+    summary.write_markdown(out);
     if (runs_.empty() || !runs_.front().metrics.slide) return;
     out << "\n| slider |";
     for (const SlideRun& r : runs_) out << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
@@ -123,21 +130,30 @@ class SlideSection : public CompareSection {
   }
 
   // One row per runner and slider; the resting box's jitter is the runner's, repeated on its rows.
-  void csv(std::ostream& o) const {
-    o << "runner,body,ground,rolling,steps,internal_edges,max_vertical_speed,max_angular_speed,"
-         "travel,resting_jitter\n";
+  Records slider_records() const {
+    Records out({{"runner", "", "", -10},
+                 {"body", "", "", -8},
+                 {"ground", "", "", -16},
+                 {"rolling", "", "", 7},
+                 {"steps", "", "", 6},
+                 {"internal_edges", "", "", 5},
+                 {"max_vertical_speed", "", "", 9},
+                 {"max_angular_speed", "", "", 9},
+                 {"travel", "", "", 9},
+                 {"resting_jitter", "", "", 9}});
     for (const SlideRun& r : runs_) {
       const scenes::SceneMetrics& m = r.metrics;
       if (!m.slide) continue;
       for (const scenes::SliderFigures& f : m.slide->sliders) {
-        o << scenes::name(m.runner) << ',' << f.body << ',' << f.ground << ',' << (f.rolling ? "true" : "false")
-          << ',' << m.steps << ','
-          << (!m.runner ? "" : internal_edges_ ? "true" : "false") << ','
-          << fmt("%.6g", f.max_vertical_speed) << ',' << fmt("%.6g", f.max_angular_speed) << ','
-          << fmt("%.6g", f.travel) << ','
-          << (m.top_displacement ? fmt("%.6g", *m.top_displacement) : "") << '\n';
+        out.add({Value::text(scenes::name(m.runner)), Value::text(f.body), Value::text(f.ground),
+                 Value::text(f.rolling ? "true" : "false"), Value::count(m.steps),
+                 Value::text(!m.runner ? "" : internal_edges_ ? "true" : "false"),
+                 Value::number(f.max_vertical_speed, "%.3f"),
+                 Value::number(f.max_angular_speed, "%.2f"), Value::number(f.travel, "%.3f"),
+                 m.top_displacement ? Value::number(*m.top_displacement, "%.2e") : Value::text("")});
       }
     }
+    return out;
   }
 
   // The sliders' paths (height above their start against distance along x), one panel per

@@ -51,8 +51,14 @@ std::string Value::displayed() const {
 }
 
 std::string Value::csv() const {
-  // Text and counts read the same everywhere; figures get the CSV's own precision.
-  return kind_ == Kind::Number || kind_ == Kind::Metres ? csv_number(number_) : displayed();
+  if (kind_ == Kind::Number || kind_ == Kind::Metres) return csv_number(number_);
+  if (kind_ == Kind::Count || text_.find_first_of(",\"\n") == std::string::npos) {
+    return displayed();  // text and counts read the same everywhere
+  }
+  // A comma, quote or line break: quoted, quotes doubled (RFC 4180).
+  std::string quoted = "\"";
+  for (char c : text_) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + '"';
 }
 
 Json Value::json() const {

@@ -34,7 +34,7 @@ inline constexpr unsigned everywhere = table | csv | markdown | json;
 /// displayed with in the table and in Markdown.
 class Value {
  public:
-  /// Text, written as it is (CSV: no quoting, so no commas in it).
+  /// Text, written as it is (in CSV quoted when it has a comma, a quote or a line break).
   static Value text(std::string s);
   /// A whole number.
   static Value count(std::int64_t n);
