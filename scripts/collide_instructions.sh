@@ -8,8 +8,9 @@
 # does; they ignore cache misses and mispredictions (callgrind's simulations count those:
 # CALLGRIND_FLAGS="--cache-sim=yes --branch-sim=yes").
 #   scripts/collide_instructions.sh [STEPS] [SCENE...]   (defaults: 150 steps; pyramid
-#   stack-concave rain rain-tall tumbler); BACKENDS (default "dyop") names the backends run beside
-#   box2d-own. Columns: instructions and their ratio to box2d-own (x_own).
+#   stack-concave rain rain-tall tumbler); a SCENE of the form rain:N is the rain with N falling
+#   triangles (the rain scaling's sizes: rain:100 ... rain:3000). BACKENDS (default "dyop") names
+#   the backends run beside box2d-own. Columns: instructions and their ratio to box2d-own (x_own).
 # Needs valgrind and a built tree (build/bin/dyop). The scene's probe (depth errors, untimed) runs
 # outside Step and is not counted.
 set -euo pipefail
@@ -53,8 +54,11 @@ for scene in "${scenes[@]}"; do
   for b in box2d-own "${backends[@]}"; do
     f="$out/$scene.$b.out"
     # shellcheck disable=SC2086  # CALLGRIND_FLAGS is a list of flags
+    size=()
+    name=$scene
+    if [[ $scene == *:* ]]; then name=${scene%%:*}; size=(--falling "${scene#*:}"); fi
     valgrind --tool=callgrind ${CALLGRIND_FLAGS:-} --callgrind-out-file="$f" \
-      build/bin/dyop scene "$scene" --runner "$b" --steps "$steps" >/dev/null 2>&1
+      build/bin/dyop scene "$name" --runner "$b" --steps "$steps" "${size[@]}" >/dev/null 2>&1
     collide[$b]=$(inclusive "$f" 'b2ContactManager::Collide\(\)')
     toi[$b]=$(inclusive "$f" 'b2World::SolveTOI\(')
     step[$b]=$(inclusive "$f" 'b2World::Step\(')

@@ -87,6 +87,12 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     err << "dyop scene: --steps must be at least 1\n";
     return exit_usage_error;
   }
+  const bool rain = c.scene == "rain" || c.scene == "rain-tall";
+  if (c.falling && (!rain || *c.falling < 1)) {
+    err << "dyop scene: --falling takes a number of triangles (at least 1), for rain and "
+           "rain-tall only\n";
+    return exit_usage_error;
+  }
   // Opened before the scene runs, so that an unwritable path fails at once.
   std::optional<report::Output> json, svg;
   if (!c.json.empty()) json.emplace(c.json, out);
@@ -103,9 +109,12 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   SceneMetrics m;
   Drawing final_state;
   try {
-    m = run_scene(c.scene, *runner, c.steps.value_or(info->default_steps),
-                  c.seed, skips.config,
-                  c.svg.empty() ? nullptr : &final_state);
+    const std::unique_ptr<Scene> scene =
+        c.falling ? make_rain(*c.falling, *runner, c.seed, skips.config)
+                  : make_scene(c.scene, *runner, c.seed, skips.config);
+    for (int i = c.steps.value_or(info->default_steps); i > 0; --i) scene->step();
+    if (!c.svg.empty()) final_state = scene->drawing();
+    m = scene->metrics();
   } catch (const std::exception& e) {
     err << "dyop scene: " << c.scene << " / " << c.runner << " could not run: " << e.what()
         << '\n';
@@ -127,6 +136,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
 void add_scene_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneCommand>();
   auto steps = std::make_shared<int>(0);
+  auto falling = std::make_shared<int>(0);
   std::vector<std::string> names, runners;
   std::string list;
   for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
@@ -153,8 +163,12 @@ void add_scene_command(CLI::App& app, int& exit_code) {
                              "all|none|LIST"));
   cmd->add_option("--json", args->json, "Write the figures as one JSON object to FILE, or '-'");
   cmd->add_option("--svg", args->svg, "Draw the final state as SVG to FILE, or '-'");
-  cmd->callback([args, steps, steps_option, &exit_code] {
+  CLI::Option* falling_option = cmd->add_option(
+      "--falling", *falling,
+      "rain and rain-tall only: this many falling triangles (the rain scaling's sizes)");
+  cmd->callback([args, steps, steps_option, falling, falling_option, &exit_code] {
     if (steps_option->count() > 0) args->steps = *steps;
+    if (falling_option->count() > 0) args->falling = *falling;
     exit_code = run_scene_command(*args, std::cout, std::cerr);
   });
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// `dyop scene NAME --runner R [--steps N] [--seed S] [--skip all|none|LIST] [--json FILE|-]
-/// [--svg FILE|-]`: runs one scene under one runner with the given narrow-phase skips, prints a
+/// `dyop scene NAME --runner R [--steps N] [--seed S] [--falling N] [--skip all|none|LIST]
+/// [--json FILE|-] [--svg FILE|-]`: runs one scene under one runner with the given narrow-phase skips, prints a
 /// short summary, and writes the figures as JSON and the final state as SVG. The command line
 /// (CLI11, `add_scene_command`) validates names; this checks them again, checks files and runs.
 
@@ -20,6 +20,9 @@ struct SceneCommand {
   /// scenes: the plug-in not installed): `scenes::parse_runner`
   std::string runner;
   std::optional<int> steps;  ///< none: the scene's default
+  /// `rain` and `rain-tall` only: this many falling triangles (`scenes::make_rain`, as the rain
+  /// scaling's sizes); none: the scene's own.
+  std::optional<int> falling;
   std::uint64_t seed = 0;
   std::string skip = "all";  ///< a `parse_skips` argument; the `paper` scene ignores it
   std::string json;          ///< empty: none; "-": `out`

@@ -43,7 +43,7 @@ Outcome run(const std::string& args) {
   return r;
 }
 
-TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
+TEST(SceneCli, UnknownSceneOrRunnerIsAUsageError) {
   const Outcome scene = run("scene nope --runner dyop");
   EXPECT_EQ(scene.status, 1);
   EXPECT_NE(scene.err.find("nope"), std::string::npos) << scene.err;
@@ -54,6 +54,15 @@ TEST(SceneCli, UnknownSceneOrBackendIsAUsageError) {
   EXPECT_EQ(run("scene pyramid --runner dyop --steps 0").status, 1);
   EXPECT_EQ(run("scene pyramid --runner dyop --json - --svg -").status, 1);
   EXPECT_EQ(run("compare --scene nope").status, 1);
+}
+
+TEST(SceneCli, FallingSizesTheRainsOnly) {
+  const Outcome rain = run("scene rain-tall --runner dyop --steps 2 --falling 60 --json -");
+  ASSERT_EQ(rain.status, 0) << rain.err;
+  const nlohmann::json j = nlohmann::json::parse(rain.out);
+  EXPECT_EQ(j["bodies"], 61) << "60 falling triangles and the bin";
+  EXPECT_EQ(run("scene stack --runner dyop --steps 2 --falling 60").status, 1);
+  EXPECT_EQ(run("scene rain --runner dyop --steps 2 --falling 0").status, 1);
 }
 
 TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
