@@ -46,11 +46,11 @@ TEST(Records, TableAlignsItsColumnsAndLeavesOutTheFilesOnlyOnes) {
             "a, \"b\"     n/a         0\n");
 }
 
-TEST(Records, MarkdownHasHeadingsARuleAndTheDisplayedFigures) {
+TEST(Records, MarkdownHasHeadingsARuleThatAlignsFiguresRightAndTheDisplayedFigures) {
   const std::string md = written([](std::ostream& o) { two_rows().write_markdown(o); });
   EXPECT_EQ(md,
             "| name | time (ms) | error (m) |\n"
-            "|---|---|---|\n"
+            "|---|--:|--:|\n"
             "| dyop | 1.23 | 1.25e-04 |\n"
             "| a, \"b\" | n/a | 0 |\n");
 }

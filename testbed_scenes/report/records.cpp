@@ -111,8 +111,8 @@ void Records::write_lines(std::ostream& out, const Layout& layout, Cell cell) co
   line(nullptr);
   if (layout.rule) {
     out << '|';
-    for (const Column& column : columns_) {
-      if (column.where & layout.where) out << "---|";
+    for (const Column& column : columns_) {  // text left-aligned, figures right-aligned
+      if (column.where & layout.where) out << (column.width < 0 ? "---|" : "--:|");
     }
     out << '\n';
   }

@@ -64,7 +64,8 @@ struct Column {
   std::string heading;
   /// The aligned table's heading (short, no spaces); empty: `key`.
   std::string abbreviation;
-  /// The aligned table's width in characters; negative: left-aligned (text), as printf's `%-Ns`.
+  /// The aligned table's width in characters; negative: left-aligned (text), as printf's `%-Ns`;
+  /// Markdown aligns the column the same way.
   int width = 10;
   /// `where` bits: every output by default.
   unsigned where = where::everywhere;
