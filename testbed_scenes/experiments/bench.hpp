@@ -10,7 +10,6 @@
 /// of both bounding boxes). The same error figures stand on every level's record of a narrow phase.
 
 #include <iosfwd>
-#include <string>
 #include <vector>
 
 #include "adapters/narrow_phase.hpp"

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "experiments/in_world.hpp"
+#include "scenes/drawing.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/scene.hpp"
-#include "report/svg.hpp"
 
 namespace dyop::experiments {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "scenes/drawing.hpp"
 #include "scenes/metrics.hpp"
 #include "scenes/scene.hpp"
-#include "report/svg.hpp"
 
 namespace dyop::experiments {
 

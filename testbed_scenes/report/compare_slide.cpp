@@ -5,6 +5,7 @@
 #include "report/compare_section.hpp"
 #include "report/format.hpp"
 #include "report/records.hpp"
+#include "report/svg.hpp"
 #include "experiments/progress.hpp"
 #include "scenes/scene.hpp"
 #include "experiments/slide_run.hpp"
