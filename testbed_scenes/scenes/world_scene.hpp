@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scenes/contact_probe.hpp"
+#include "scenes/manifold_check.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 #include "workloads/random.hpp"
@@ -60,6 +61,7 @@ class WorldScene : public Scene {
   void step() override;
   SceneMetrics metrics() const override;
   Drawing drawing() const override;
+  void check_manifolds() override;
 
   /// The world, for tests that look inside.
   const World& world() const { return *world_; }
@@ -86,6 +88,7 @@ class WorldScene : public Scene {
   std::vector<b2Vec2> watched_start_;
   std::vector<float> slider_start_x_;
   std::unique_ptr<ContactProbe> probe_;
+  std::unique_ptr<ManifoldCheck> manifold_check_;  // set on the world by `check_manifolds`
 
   int steps_ = 0;
   std::vector<double> step_ms_;
