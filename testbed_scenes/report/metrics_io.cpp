@@ -102,6 +102,7 @@ Json to_json(const SceneMetrics& m) {
   j["step_ms_total"] = json_number(m.step_ms_total);
   j["narrowphase_ms_total"] = json_number(m.narrowphase_ms_total);
   j["narrowphase_ns_per_pair"] = json_number(m.narrowphase_ns_per_pair);
+  j["solve_toi_ms_total"] = json_number(m.solve_toi_ms_total);
   j["max_penetration"] = json_number(m.max_penetration);
   j["mean_penetration"] = json_number(m.mean_penetration);
   j["pd_error_max"] = json_number(m.pd_error_max);

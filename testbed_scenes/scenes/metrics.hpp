@@ -104,6 +104,9 @@ struct SceneMetrics {
   /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);
   /// paper, the time of the runner's calls.
   double narrowphase_ms_total = 0;
+  /// Box2D scenes: time in `b2World::SolveTOI` over the same steps (ms, the sum of
+  /// `GetProfile().solveTOI`: the time-of-impact pass); 0 for `paper`.
+  double solve_toi_ms_total = 0;
   /// `narrowphase_ms_total` per contact update (ns). Box2D scenes: includes Box2D's own per-contact
   /// work around the call (the broad-phase overlap test, manifold bookkeeping, warm-start match).
   double narrowphase_ns_per_pair = 0;

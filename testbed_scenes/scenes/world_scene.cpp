@@ -66,6 +66,7 @@ void WorldScene::step() {
   if (measured) {
     step_ms_measured_ += step_ms_.back();
     collide_ms_ += world_->get().GetProfile().collide;
+    solve_toi_ms_ += world_->get().GetProfile().solveTOI;
     updates_.contacts += u.contacts;
     updates_.triangles += u.triangles;
   }
@@ -123,6 +124,7 @@ SceneMetrics WorldScene::metrics() const {
   m.step_ms_median = median(step_ms_);
   m.step_ms_total = step_ms_measured_;
   m.narrowphase_ms_total = collide_ms_;
+  m.solve_toi_ms_total = solve_toi_ms_;
   m.narrowphase_ns_per_pair =
       updates_.contacts > 0 ? collide_ms_ * 1e6 / static_cast<double>(updates_.contacts) : 0;
   add_accuracy(errors_, penetration_, m);

@@ -94,6 +94,7 @@ class WorldScene : public Scene {
   std::vector<double> step_ms_;
   double step_ms_measured_ = 0;  // steps 2..N, as `collide_ms_`
   double collide_ms_ = 0;
+  double solve_toi_ms_ = 0;  // steps 2..N
   ContactProbe::Updates updates_;
   ErrorTally errors_;
   PenetrationTally penetration_;
