@@ -86,6 +86,7 @@ Records sweep_records(const std::vector<RecyclingRecord>& rows) {
 
 class RecyclingSection : public CompareSection {
  public:
+  const char* section_name() const override { return "recycling"; }
   void run(const SectionContext& c) override {
     experiments::RecyclingSweepOptions o;
     for (const std::string& name : c.options.quick ? kQuickScenes : kScenes) {

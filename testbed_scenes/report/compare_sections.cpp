@@ -26,6 +26,12 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   return sections;
 }
 
+std::vector<std::string> compare_section_names() {
+  std::vector<std::string> names;
+  for (const auto& s : make_compare_sections()) names.emplace_back(s->section_name());
+  return names;
+}
+
 bool SectionContext::selected(const std::string& name) const {
   return std::any_of(scenes.begin(), scenes.end(),
                      [&](const scenes::SceneInfo* s) { return name == s->name; });
@@ -54,7 +60,12 @@ Comparison run_comparison(const experiments::CompareOptions& options, std::ostre
   const std::vector<const scenes::SceneInfo*> scenes = experiments::selected_scenes(options);
   const SectionContext context{options, scenes, progress, elapsed};
   c.sections = make_compare_sections();
-  for (const auto& s : c.sections) s->run(context);
+  const std::vector<std::string>& only = options.sections;
+  for (const auto& s : c.sections) {
+    if (only.empty() || std::find(only.begin(), only.end(), s->section_name()) != only.end()) {
+      s->run(context);
+    }
+  }
   c.seconds = elapsed();
   return c;
 }
