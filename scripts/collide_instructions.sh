@@ -10,7 +10,10 @@
 #   scripts/collide_instructions.sh [STEPS] [SCENE...]   (defaults: 150 steps; pyramid
 #   stack-concave rain rain-tall tumbler); a SCENE of the form rain:N is the rain with N falling
 #   triangles (the rain scaling's sizes: rain:100 ... rain:3000). BACKENDS (default "dyop") names
-#   the backends run beside box2d-own. Columns: instructions and their ratio to box2d-own (x_own).
+#   the backends run beside box2d-own; SCENE_FLAGS (e.g. "--recycle 0.005") are given to their
+#   runs; DYOP (default build/bin/dyop) is the program run, e.g. another tree's to compare builds.
+#   Columns: instructions and their ratio to box2d-own (x_own). KEEP=DIR keeps callgrind's files
+#   there (for callgrind_annotate, e.g. the cache misses of one function).
 # Needs valgrind and a built tree (build/bin/dyop). The scene's probe (depth errors, untimed) runs
 # outside Step and is not counted.
 set -euo pipefail
@@ -21,8 +24,13 @@ shift || true
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(pyramid stack-concave rain rain-tall tumbler)
 backends=(${BACKENDS:-dyop})
-out=$(mktemp -d)
-trap 'rm -rf "$out"' EXIT
+if [ -n "${KEEP:-}" ]; then
+  out=$KEEP
+  mkdir -p "$out"
+else
+  out=$(mktemp -d)
+  trap 'rm -rf "$out"' EXIT
+fi
 inclusive() {  # file function-pattern -> instructions (reads all: no SIGPIPE under pipefail)
   callgrind_annotate --inclusive=yes "$1" 2>/dev/null |
     awk -v pattern="$2" '!found && $0 ~ pattern { gsub(",", "", $1); print $1; found = 1 }'
@@ -49,16 +57,20 @@ toi_calls() {  # file -> "b2TimeOfImpact-calls SolveTOI-contact-updates", from t
 ratio() { awk -v a="$1" -v o="$2" 'BEGIN { printf "%.3f", (o > 0 ? a / o : 0) }'; }
 printf '%-14s %-10s %14s %7s %14s %7s %14s %7s %10s %9s\n' scene runner collide_Ir x_own \
   solve_toi_Ir x_own step_Ir x_own toi_calls toi_upd
+declare -A collide=() toi=() step=()
 for scene in "${scenes[@]}"; do
-  declare -A collide=() toi=() step=()
+  collide=() toi=() step=()
   for b in box2d-own "${backends[@]}"; do
     f="$out/$scene.$b.out"
     # shellcheck disable=SC2086  # CALLGRIND_FLAGS is a list of flags
     size=()
     name=$scene
     if [[ $scene == *:* ]]; then name=${scene%%:*}; size=(--falling "${scene#*:}"); fi
+    flags=()
+    if [ "$b" != box2d-own ]; then flags=(${SCENE_FLAGS:-}); fi
     valgrind --tool=callgrind ${CALLGRIND_FLAGS:-} --callgrind-out-file="$f" \
-      build/bin/dyop scene "$name" --runner "$b" --steps "$steps" "${size[@]}" >/dev/null 2>&1
+      "${DYOP:-build/bin/dyop}" scene "$name" --runner "$b" --steps "$steps" "${size[@]}" \
+      "${flags[@]}" >/dev/null 2>&1
     collide[$b]=$(inclusive "$f" 'b2ContactManager::Collide\(\)')
     toi[$b]=$(inclusive "$f" 'b2World::SolveTOI\(')
     step[$b]=$(inclusive "$f" 'b2World::Step\(')
@@ -68,5 +80,4 @@ for scene in "${scenes[@]}"; do
       "$(ratio "${toi[$b]:-0}" "${toi[box2d-own]:-0}")" "${step[$b]}" \
       "$(ratio "${step[$b]}" "${step[box2d-own]}")" "$calls" "$updates"
   done
-  unset collide toi step
 done

@@ -81,10 +81,9 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
 
 // Who answered a pair.
 enum class Answer : std::uint8_t {
-  Plugin,        // the backend's method, a skip or a kept manifold: `manifold` is written
-  Box2DBackend,  // a triangle pair for `Backend::Box2D`: Box2D's code is the backend's answer
-  Box2DFallback, // a triangle pair the method could not answer: Box2D's code, counted
-  Box2DOther,    // uninstalled, or a larger polygon: Box2D's code, as its own contact
+  Plugin,          // the backend's method, a skip or a kept manifold: `manifold` is written
+  Box2DTriangles,  // a triangle pair for Box2D's code (backend `Box2D`, or a fallback)
+  Box2DOther,      // uninstalled, or a larger polygon: Box2D's code, as its own contact
 };
 
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
@@ -156,7 +155,7 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
   }
   // `Backend::Box2D` has no method: Box2D's own code is its answer, not a fallback. A method
   // that cannot answer falls back so that the world goes on, and is counted.
-  if (!setting.method) return Answer::Box2DBackend;
+  if (!setting.method) return Answer::Box2DTriangles;
   if (memory.shapes == Shapes::Triangles &&
       run_method(manifold, setting, p, b_in_a, memory, contact)) {
     if (manifold->pointCount > 0) count.manifolds.add();
@@ -169,7 +168,7 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
     return Answer::Plugin;
   }
   count.fallbacks.add();
-  return Answer::Box2DFallback;
+  return Answer::Box2DTriangles;
 }
 
 // The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
@@ -184,16 +183,7 @@ inline void evaluate(b2Manifold* manifold, const Setting& setting, const Polygon
                             : Answer::Box2DOther;
   if (answer == Answer::Plugin) return;
   b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
-  if (answer == Answer::Box2DOther) return;
-  if (manifold->pointCount > 0) counters().manifolds.add();
-  // Box2D's code as the backend is kept like a method's answer (a manifold with points only:
-  // it judges no face that could bound an empty one's slack).
-  if (answer == Answer::Box2DBackend && recycling && setting.recycles()) {
-    const float slack = setting.never_recompute ? 1.0f
-                        : manifold->pointCount > 0 ? setting.config.recycle_distance
-                                                   : 0.0f;
-    recycling->remember(b2MulT(pair.xf_a, pair.xf_b), slack, setting.epoch);
-  }
+  if (answer == Answer::Box2DTriangles && manifold->pointCount > 0) counters().manifolds.add();
 }
 
 }  // namespace dyop::box2d::detail

@@ -40,8 +40,11 @@ struct Setting {
         epoch(install_epoch) {}
 
   // True when a world's contacts may keep their manifold (`Config::recycle_distance`, or the
-  // floor).
-  bool recycles() const { return config.recycle_distance > 0 || never_recompute; }
+  // floor): a method's manifolds only. `Backend::Box2D` answers afresh every time, as Box2D's
+  // own contact: it stays the bit-identical reference.
+  bool recycles() const {
+    return method.has_value() && (config.recycle_distance > 0 || never_recompute);
+  }
 };
 
 struct Installation {
