@@ -98,7 +98,8 @@ class Group : public b2QueryCallback {
 
  private:
   void consider(const b2Fixture& f) {
-    if (&f == &self_) return;
+    // A sensor is no part of the outline: nothing collides with it.
+    if (&f == &self_ || f.IsSensor()) return;
     const b2Body& body = *f.GetBody();
     if (!share_edges(body_, body)) return;
     const b2PolygonShape* p = triangle_of(f);

@@ -1,9 +1,9 @@
 // The internal-edge masks of triangle fixtures (`dyop::box2d::triangle_internal_edges`) in worlds
 // built by hand: edges shared by static bodies are internal, in any frames, within the placement
-// tolerance and not beyond; dynamic and kinematic bodies keep their edges to themselves; an edge
-// covered wholly by the edges of a refined neighbour (T-junctions) is internal and the junction's
-// vertex flat; an edge covered in part stays an outline edge; tiles in bodies of their own get
-// the masks of the same tiles in one body.
+// tolerance and not beyond; dynamic and kinematic bodies keep their edges to themselves, sensors
+// share none; an edge covered wholly by the edges of a refined neighbour (T-junctions) is internal
+// and the junction's vertex flat; an edge covered in part stays an outline edge; tiles in bodies
+// of their own get the masks of the same tiles in one body.
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
@@ -119,6 +119,16 @@ TEST(EdgeGroupMasks, EdgeSharedByMovingBodiesStaysAnOutlineEdge) {
     EXPECT_EQ(triangle_internal_edges(*a), InternalEdges{});
     EXPECT_EQ(triangle_internal_edges(*b), InternalEdges{});
   }
+}
+
+// A sensor triangle on the other side of an edge: nothing collides with it, so the edge stays the
+// outline.
+TEST(EdgeGroupMasks, SensorsShareNoEdges) {
+  World world;
+  b2Fixture* a = placed_triangle(world, b2_staticBody, {0, 0}, {1, 0}, {0, 1});
+  b2Fixture* b = placed_triangle(world, b2_staticBody, {1, 0}, {1, 1}, {0, 1});
+  b->SetSensor(true);
+  EXPECT_FALSE(internal(*a, {1, 0}, {0, 1}));
 }
 
 // Cell A = [0, 1]² split along a diagonal, cell B = [1, 2] × [0, 1] split in five around its

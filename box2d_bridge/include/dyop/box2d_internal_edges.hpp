@@ -14,7 +14,8 @@ namespace dyop::box2d {
 /// runs from `m_vertices[i]` to `[i + 1]`), found from its world's broad phase. Empty for any
 /// other shape. What is internal:
 /// - The edge group of a fixture is the triangles of its own body and, for a static body, of
-///   every static body (dynamic and kinematic bodies keep their edges to themselves).
+///   every static body (dynamic and kinematic bodies keep their edges to themselves); sensors are
+///   no part of it.
 /// - An edge is internal when the union of the group's edges collinear with it and running the
 ///   other way covers it wholly: a neighbour's same edge, or a refined neighbour's edges meeting it
 ///   at T-junctions. Points of two bodies are one point within a tolerance of 16·FLT_EPSILON of
