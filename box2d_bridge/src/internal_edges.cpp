@@ -55,6 +55,7 @@ class Group : public b2QueryCallback {
       : self_(self), body_(*self.GetBody()), triangles_(scratch) {
     triangles_.clear();
     triangles_.push_back({{own.m_vertices[0], own.m_vertices[1], own.m_vertices[2]}});
+    for (const b2Vec2& v : triangles_.front().v) own_scale_ = std::max(own_scale_, magnitude(v));
   }
 
   void collect() {
@@ -89,11 +90,7 @@ class Group : public b2QueryCallback {
   // (2.5 mm) in any world Box2D handles well, so only what is one point for Box2D is one point
   // here.
   float tolerance() const {
-    constexpr float coincidence_epsilons = 16;
-    float scale = 0;
-    for (const b2Vec2& v : triangles_.front().v) scale = std::max(scale, magnitude(v));
-    if (placed_) scale += magnitude(body_.GetTransform().p) + other_origins_;
-    return coincidence_epsilons * FLT_EPSILON * scale;
+    return tolerance_for(placed_ ? magnitude(body_.GetTransform().p) + other_origins_ : 0);
   }
 
  private:
@@ -110,17 +107,55 @@ class Group : public b2QueryCallback {
     // Bodies at the same place (tiles made at the origin): one frame, the coordinates as given.
     const bool one_frame = &body == &body_ || (mine.p.x == theirs.p.x && mine.p.y == theirs.p.y &&
                                                mine.q.c == theirs.q.c && mine.q.s == theirs.q.s);
+    float origins = 0;
     if (!one_frame) {
       for (b2Vec2& v : t.v) v = b2MulT(mine, b2Mul(theirs, v));
+      origins = magnitude(mine.p) + magnitude(theirs.p);
+    }
+    if (!touches(t, tolerance_for(origins))) return;
+    if (!one_frame) {
       placed_ = true;
       other_origins_ = std::max(other_origins_, magnitude(theirs.p));
     }
     triangles_.push_back(t);
   }
 
+  // The tolerance for points placed through frames whose origins sum to `origins` in magnitude.
+  float tolerance_for(float origins) const {
+    return coincidence_epsilons * FLT_EPSILON * (own_scale_ + origins);
+  }
+
+  // True when `t` may bound the own triangle's outline: a vertex of it lies on the line of an own
+  // edge, or an own vertex on the line of one of its edges (within `tol`). Only such triangles
+  // have an edge collinear with an own edge or through an own vertex, all that the masks read;
+  // the others (most of what the broad phase's fattened box meets) are left out of every pass.
+  bool touches(const GroupTriangle& t, float tol) const {
+    const GroupTriangle& own = triangles_.front();
+    const float tol_sq = tol * tol;
+    const auto on_line = [&](const b2Vec2& a, const b2Vec2& b, const b2Vec2& p) {
+      const b2Vec2 d = b - a;
+      const float off = b2Cross(d, p - a);
+      return off * off <= tol_sq * d.LengthSquared();
+    };
+    for (int i = 0; i < 3; ++i) {
+      for (const b2Vec2& p : t.v) {
+        if (on_line(own.v[i], own.v[next(i)], p)) return true;
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      for (const b2Vec2& p : own.v) {
+        if (on_line(t.v[k], t.v[next(k)], p)) return true;
+      }
+    }
+    return false;
+  }
+
   const b2Fixture& self_;
   const b2Body& body_;
   std::vector<GroupTriangle>& triangles_;
+  // The tolerance's scale (see `tolerance`): 16 FLT_EPSILON.
+  static constexpr float coincidence_epsilons = 16;
+  float own_scale_ = 0;      // the largest magnitude of the own triangle's coordinates
   bool placed_ = false;      // a triangle of another frame was placed in this one
   float other_origins_ = 0;  // the largest magnitude of those frames' origins
 };
@@ -146,19 +181,21 @@ struct Interval {
   float hi;
 };
 
-// What the group's edges running the other way along `line` cover of it (both ends within `tol`
-// of the line; their triangles lie on its other side): one interval per edge, into `out`.
-void opposite_cover(const std::vector<GroupTriangle>& group, const Line& line, float tol,
+// An edge of the group, from a to b (its triangle on its left).
+struct Segment {
+  b2Vec2 a;
+  b2Vec2 b;
+};
+
+// What the edges among `edges` running the other way along `line` cover of it (both ends within
+// `tol` of the line; their triangles lie on its other side): one interval per edge, into `out`.
+void opposite_cover(const std::vector<Segment>& edges, const Line& line, float tol,
                     std::vector<Interval>& out) {
   out.clear();
-  for (const GroupTriangle& t : group) {
-    for (int k = 0; k < 3; ++k) {
-      const b2Vec2& a = t.v[k];
-      const b2Vec2& b = t.v[next(k)];
-      if (b2Dot(b - a, line.unit) >= 0) continue;
-      if (std::abs(line.off(a)) > tol || std::abs(line.off(b)) > tol) continue;
-      out.push_back({line.along(b), line.along(a)});
-    }
+  for (const Segment& e : edges) {
+    if (b2Dot(e.b - e.a, line.unit) >= 0) continue;
+    if (std::abs(line.off(e.a)) > tol || std::abs(line.off(e.b)) > tol) continue;
+    out.push_back({line.along(e.b), line.along(e.a)});
   }
 }
 
@@ -193,35 +230,34 @@ struct VertexOutline {
   int ins = 0;
   int outs = 0;
 
-  // Gathers the pieces at `at` from every edge of `group` that ends at it, starts at it, or (a
+  // Gathers the pieces at `at` from every edge of `edges` that ends at it, starts at it, or (a
   // T-junction) passes through it. Only the stretch next to `at` counts: a neighbour's edge
-  // covered elsewhere in part still bounds the outline here.
-  void gather(const std::vector<GroupTriangle>& group, const b2Vec2& at, float tol,
+  // covered elsewhere in part still bounds the outline here. What covers such a stretch passes
+  // through `at` or ends there too, so the cover is looked for among these edges alone.
+  void gather(const std::vector<Segment>& edges, const b2Vec2& at, float tol,
               std::vector<Interval>& cover) {
     const float tol_sq = tol * tol;
-    for (const GroupTriangle& t : group) {
-      for (int k = 0; k < 3; ++k) {
-        const b2Vec2& a = t.v[k];
-        const b2Vec2& b = t.v[next(k)];
-        const b2Vec2 edge = b - a;
-        const bool starts = (a - at).LengthSquared() <= tol_sq;
-        const bool ends = !starts && (b - at).LengthSquared() <= tol_sq;
-        if (!starts && !ends) {
-          const float off = b2Cross(edge, at - a);
-          if (off * off > tol_sq * edge.LengthSquared()) continue;
-        }
-        const Line line(a, b);
-        const float s = starts ? 0 : ends ? line.length : line.along(at);
-        if (!starts && !ends && (s <= tol || s >= line.length - tol)) continue;
-        opposite_cover(group, line, tol, cover);
-        if (!starts && !covers_before(cover, s, tol)) {
-          in = edge;
-          ++ins;
-        }
-        if (!ends && !covers_after(cover, s, tol)) {
-          out = edge;
-          ++outs;
-        }
+    thread_local std::vector<Segment> near;  // the edges through `at`
+    near.clear();
+    for (const Segment& e : edges) {
+      const b2Vec2 edge = e.b - e.a;
+      const float off = b2Cross(edge, at - e.a);
+      if (off * off <= tol_sq * edge.LengthSquared()) near.push_back(e);
+    }
+    for (const Segment& e : near) {
+      const bool starts = (e.a - at).LengthSquared() <= tol_sq;
+      const bool ends = !starts && (e.b - at).LengthSquared() <= tol_sq;
+      const Line line(e.a, e.b);
+      const float s = starts ? 0 : ends ? line.length : line.along(at);
+      if (!starts && !ends && (s <= tol || s >= line.length - tol)) continue;  // off its ends
+      opposite_cover(near, line, tol, cover);
+      if (!starts && !covers_before(cover, s, tol)) {
+        in = e.b - e.a;
+        ++ins;
+      }
+      if (!ends && !covers_after(cover, s, tol)) {
+        out = e.b - e.a;
+        ++outs;
       }
     }
   }
@@ -249,12 +285,17 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   if (triangles.size() == 1) return {};
   const float tol = group.tolerance();
   const GroupTriangle& self = triangles.front();
+  thread_local std::vector<Segment> edges;
+  edges.clear();
+  for (const GroupTriangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) edges.push_back({t.v[k], t.v[next(k)]});
+  }
 
   thread_local std::vector<Interval> cover;
   InternalEdges masks;
   for (int i = 0; i < 3; ++i) {
     const Line line(self.v[i], self.v[next(i)]);
-    opposite_cover(triangles, line, tol, cover);
+    opposite_cover(edges, line, tol, cover);
     if (covers_wholly(cover, line.length, tol)) masks.edges |= static_cast<std::uint8_t>(1u << i);
   }
   for (int i = 0; i < 3; ++i) {
@@ -271,7 +312,7 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
       // triangle touching the vertex is in the group found, so the outline pieces there are all
       // seen.
       VertexOutline outline;
-      outline.gather(triangles, self.v[i], tol, cover);
+      outline.gather(edges, self.v[i], tol, cover);
       if (!outline.flat_or_reflex()) continue;
     }
     masks.closed_vertices |= static_cast<std::uint8_t>(1u << i);
