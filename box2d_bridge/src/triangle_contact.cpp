@@ -8,6 +8,7 @@
 #include <optional>
 #include <typeinfo>
 
+#include "dyop/box2d_internal_edges.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
 #include "installation.hpp"
@@ -176,3 +177,15 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
 }
 
 }  // namespace dyop::box2d::detail
+
+namespace dyop::box2d {
+
+void forget_internal_edges(b2World& world) {
+  for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) {
+    if (detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
+      ours->forget_internal_edges();
+    }
+  }
+}
+
+}  // namespace dyop::box2d

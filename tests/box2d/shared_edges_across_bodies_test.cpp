@@ -2,7 +2,8 @@
 // over a ground of one static body per triangle as over one body; a ground of kinematic bodies
 // keeps every edge an outline edge (the world is bit-identical to one without the rule); and the
 // masks of live contacts follow a neighbouring static body moved away (`SetTransform`, far or by a
-// centimetre), made kinematic and static again (`SetType`), and destroyed and made anew.
+// centimetre), made kinematic and static again (`SetType`), and disabled and enabled again; a body
+// beyond the broad phase's margin sees a move after `forget_internal_edges`.
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <functional>
 #include <utility>
 
+#include "dyop/box2d_internal_edges.hpp"
 #include "scene.hpp"
 
 namespace dyop::box2d::testing {
@@ -141,6 +143,31 @@ TEST(SharedEdgesAcrossBodies, NeighbourMadeKinematicLeavesAnOutlineEdge) {
 TEST(SharedEdgesAcrossBodies, NeighbourDisabledLeavesAnOutlineEdge) {
   expect_masks_follow([](b2Body* f) { f->SetEnabled(false); },
                       [](b2Body* f) { f->SetEnabled(true); }, 0.4f);
+}
+
+// A body resting 2.7 m from the neighbour, beyond the broad phase's margin: it has no contact with
+// the neighbour, so nothing tells it that the neighbour moved away (the world's fixtures are the
+// same), and its contact with G keeps G's edge internal; `forget_internal_edges` makes it look.
+TEST(SharedEdgesAcrossBodies, NeighbourMovedFarFromABodyIsSeenAfterForgetInternalEdges) {
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  World world;
+  b2Body* g = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  add_triangle(g, {0, 0}, {0, -1}, {4, 0});
+  b2Body* f = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  add_triangle(f, {0, 0}, {-4, 0}, {0, -1});
+  b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(3.0f, 0.0f));
+  add_triangle(body, {-0.3f, 0}, {0.3f, 0}, {0, 0.3f}, kIce);
+  const auto rule_pairs_over = [&](int steps) {
+    reset_stats();
+    for (int i = 0; i < steps; ++i) world.step();
+    return stats().internal_edge_pairs;
+  };
+  EXPECT_GT(rule_pairs_over(30), 0u);
+  f->SetTransform(b2Vec2(-30.0f, 0.0f), 0);
+  EXPECT_GT(rule_pairs_over(10), 0u) << "not seen: the limit forget_internal_edges is for";
+  forget_internal_edges(world.get());
+  EXPECT_EQ(rule_pairs_over(10), 0u);
+  ASSERT_TRUE(uninstall().ok());
 }
 
 }  // namespace

@@ -192,7 +192,8 @@ struct Config {
   /// near each one, from the world's broad phase), and keeps them in its `ContactMemory`; it finds
   /// them again after fixtures of its world or the frames of its static bodies changed
   /// (`ContactMemory::internal_edges_stamp`), and tells its moving body's other contacts with
-  /// static bodies to do the same. The other backends ignore it and never look. Off: the world is
+  /// static bodies to do the same (`forget_internal_edges` in `dyop/box2d_internal_edges.hpp`
+  /// for what it cannot see). The other backends ignore it and never look. Off: the world is
   /// bit-identical to Box2D's own handling of each fixture alone, as the plug-in was without the
   /// rule.
   bool internal_edges = true;

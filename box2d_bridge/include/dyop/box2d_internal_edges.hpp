@@ -5,6 +5,7 @@
 /// tile map, and tests.
 
 #include <box2d/b2_fixture.h>
+#include <box2d/b2_world.h>
 
 #include "dyop/result.hpp"
 
@@ -25,5 +26,13 @@ namespace dyop::box2d {
 ///   uncovered stretches of the group's edges) is flat or reflex there; a vertex lying inside
 ///   another triangle's edge takes that edge as the outline through it, straight.
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
+
+/// Makes every contact of `world` find its masks again when next needed: O(contacts), for a
+/// program that moved static bodies (`SetTransform`) and wants bodies that were farther than the
+/// broad phase's margin (0.1 m) from them to see it at once. The plug-in sees every other change
+/// itself: fixtures created, destroyed, enabled or disabled anywhere in the world, a static body
+/// moved or made static or not near a body (through that body's contact with it), and contacts
+/// made or ended between steps (see `Config::internal_edges`). Call between steps.
+void forget_internal_edges(b2World& world);
 
 }  // namespace dyop::box2d
