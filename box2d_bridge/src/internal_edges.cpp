@@ -1,14 +1,18 @@
 #include "internal_edges.hpp"
 
-#include <box2d/b2_body.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 #include <box2d/b2_world_callbacks.h>
 
-#include <cstring>
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <vector>
 
-namespace dyop::box2d::detail {
+#include "dyop/box2d_internal_edges.hpp"
+
+namespace dyop::box2d {
+namespace detail {
 namespace {
 
 // A vertex outline turning by less than this (the sine of the angle between its two outline
@@ -17,24 +21,13 @@ namespace {
 // edge's normal is within that angle of the outline's.
 constexpr float flat_outline_sine = 1e-3f;
 
-// A body with at most this many fixtures has its list walked instead of the broad phase queried.
-// Why: the result is the same (every triangle of the body is a candidate; only those sharing a
-// vertex count), and a walk costs tens of instructions per fixture against about 3,500 for one
-// query of a ground's broad phase (callgrind): below a few dozen fixtures the walk is cheaper, and
-// a split box or a star (2 to 10 fixtures) never pays for a query.
+// A non-static body with at most this many fixtures has its list walked instead of the broad
+// phase queried. Why: the result is the same (every triangle of the body is a candidate; only
+// those touching it count), and a walk costs tens of instructions per fixture against about 3,500
+// for one query of a ground's broad phase (callgrind): below a few dozen fixtures the walk is
+// cheaper, and a split box or a star (2 to 10 fixtures) never pays for a query. A static body
+// always queries: its group spans the other static bodies.
 constexpr int walked_body_fixtures = 16;
-
-
-// A body-frame vertex as its two floats' bits (-0 made +0: the same point).
-std::uint64_t point_key(const b2Vec2& v) {
-  const float x = v.x + 0.0f;
-  const float y = v.y + 0.0f;
-  std::uint32_t bx;
-  std::uint32_t by;
-  std::memcpy(&bx, &x, sizeof bx);
-  std::memcpy(&by, &y, sizeof by);
-  return static_cast<std::uint64_t>(bx) << 32 | by;
-}
 
 const b2PolygonShape* triangle_of(const b2Fixture& f) {
   if (f.GetType() != b2Shape::e_polygon) return nullptr;
@@ -42,51 +35,40 @@ const b2PolygonShape* triangle_of(const b2Fixture& f) {
   return p->m_count == 3 ? p : nullptr;
 }
 
-// A triangle's three vertices as keys, Box2D's order.
-struct TriangleKeys {
-  std::uint64_t v[3];
-  explicit TriangleKeys(const b2PolygonShape& p)
-      : v{point_key(p.m_vertices[0]), point_key(p.m_vertices[1]), point_key(p.m_vertices[2])} {}
-  // True when this triangle has the vertex p.
-  bool has_vertex(std::uint64_t p) const { return v[0] == p || v[1] == p || v[2] == p; }
-  // True when this triangle has the edge p–q, either way round.
-  bool has_edge(std::uint64_t p, std::uint64_t q) const {
-    for (int i = 0; i < 3; ++i) {
-      const std::uint64_t a = v[i];
-      const std::uint64_t b = v[i < 2 ? i + 1 : 0];
-      if ((a == p && b == q) || (a == q && b == p)) return true;
-    }
-    return false;
-  }
+float magnitude(const b2Vec2& v) { return std::max(std::abs(v.x), std::abs(v.y)); }
+
+int next(int i) { return i < 2 ? i + 1 : 0; }
+
+// A triangle of the edge group in the frame of the fixture whose masks are found, Box2D's order.
+struct GroupTriangle {
+  b2Vec2 v[3];
 };
 
-// The other triangle fixtures of one fixture's body that share a vertex with it: the only ones
-// its masks depend on. Looked for among all of the body's fixtures for a small body, else among
-// those whose broad-phase boxes overlap its own.
-class Neighbours : public b2QueryCallback {
+// The triangle fixtures that share edges with one fixture's body (`share_edges`) near it: those
+// whose broad-phase boxes overlap its own (or all of a small non-static body's), in its body's
+// frame; the fixture's own triangle first.
+class Group : public b2QueryCallback {
  public:
-  struct Entry {
-    const b2PolygonShape* shape;
-    TriangleKeys keys;
-  };
-
   // `scratch` is emptied and filled: the calling thread's, reused so that finding masks
   // allocates nothing once it has grown to the largest neighbourhood seen.
-  Neighbours(const b2Fixture& self, const TriangleKeys& keys, std::vector<Entry>& scratch)
-      : self_(self), keys_(keys), shapes_(scratch) {
-    shapes_.clear();
+  Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupTriangle>& scratch)
+      : self_(self), body_(*self.GetBody()), triangles_(scratch) {
+    triangles_.clear();
+    triangles_.push_back({{own.m_vertices[0], own.m_vertices[1], own.m_vertices[2]}});
+    for (const b2Vec2& v : triangles_.front().v) own_scale_ = std::max(own_scale_, magnitude(v));
   }
 
   void collect() {
-    const b2Body& body = *self_.GetBody();
-    int count = 0;
-    const b2Fixture* f = body.GetFixtureList();
-    for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
-    if (f == nullptr) {  // a small body: all of it
-      for (f = body.GetFixtureList(); f; f = f->GetNext()) consider(*f);
-    } else {
-      body.GetWorld()->QueryAABB(this, self_.GetAABB(0));
+    if (body_.GetType() != b2_staticBody) {
+      int count = 0;
+      const b2Fixture* f = body_.GetFixtureList();
+      for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
+      if (f == nullptr) {  // a small body: all of it
+        for (f = body_.GetFixtureList(); f; f = f->GetNext()) consider(*f);
+        return;
+      }
     }
+    body_.GetWorld()->QueryAABB(this, self_.GetAABB(0));
   }
 
   bool ReportFixture(b2Fixture* f) override {
@@ -94,60 +76,193 @@ class Neighbours : public b2QueryCallback {
     return true;  // every overlap
   }
 
-  const std::vector<Entry>& found() const { return shapes_; }
+  const std::vector<GroupTriangle>& triangles() const { return triangles_; }
 
-  // True when a triangle among them has the edge p–q.
-  bool shared(std::uint64_t p, std::uint64_t q) const {
-    for (const Entry& e : shapes_) {
-      if (e.keys.has_edge(p, q)) return true;
-    }
-    return false;
+  // Two points of the group are one point, and a point lies on an edge's line, within this
+  // distance (metres). Why: a vertex of another body is placed in the world by its body's
+  // transform and brought back into this body's frame by this one's; each placement rounds the
+  // rotation's cosine and sine, two products and a sum, about 3·FLT_EPSILON of the magnitudes
+  // involved (the vertex, the body origins), and the bodies' origins were themselves computed by
+  // the caller in floats (i · tile, a few roundings). 16·FLT_EPSILON of the sum of the magnitudes
+  // covers both placements and the caller's with a margin of two; within one frame only the
+  // caller's rounding of its own coordinates counts. It is 2 µm per 1 m of magnitude: 0.2 mm at
+  // 100 m from the origin, 2 mm at 1 km, below Box2D's linear slop (5 mm) and its weld distance
+  // (2.5 mm) in any world Box2D handles well, so only what is one point for Box2D is one point
+  // here.
+  float tolerance() const {
+    return tolerance_for(placed_ ? magnitude(body_.GetTransform().p) + other_origins_ : 0);
   }
 
  private:
   void consider(const b2Fixture& f) {
-    if (&f == &self_ || f.GetBody() != self_.GetBody()) return;
+    // A sensor is no part of the outline: nothing collides with it.
+    if (&f == &self_ || f.IsSensor()) return;
+    const b2Body& body = *f.GetBody();
+    if (!share_edges(body_, body)) return;
     const b2PolygonShape* p = triangle_of(f);
     if (!p) return;
-    const TriangleKeys keys(*p);
-    if (keys.has_vertex(keys_.v[0]) || keys.has_vertex(keys_.v[1]) || keys.has_vertex(keys_.v[2])) {
-      shapes_.push_back({p, keys});
+    GroupTriangle t{{p->m_vertices[0], p->m_vertices[1], p->m_vertices[2]}};
+    const b2Transform& mine = body_.GetTransform();
+    const b2Transform& theirs = body.GetTransform();
+    // Bodies at the same place (tiles made at the origin): one frame, the coordinates as given.
+    const bool one_frame = &body == &body_ || (mine.p.x == theirs.p.x && mine.p.y == theirs.p.y &&
+                                               mine.q.c == theirs.q.c && mine.q.s == theirs.q.s);
+    float origins = 0;
+    if (!one_frame) {
+      for (b2Vec2& v : t.v) v = b2MulT(mine, b2Mul(theirs, v));
+      origins = magnitude(mine.p) + magnitude(theirs.p);
     }
+    if (!touches(t, tolerance_for(origins))) return;
+    if (!one_frame) {
+      placed_ = true;
+      other_origins_ = std::max(other_origins_, magnitude(theirs.p));
+    }
+    triangles_.push_back(t);
+  }
+
+  // The tolerance for points placed through frames whose origins sum to `origins` in magnitude.
+  float tolerance_for(float origins) const {
+    return coincidence_epsilons * FLT_EPSILON * (own_scale_ + origins);
+  }
+
+  // True when `t` may bound the own triangle's outline: a vertex of it lies on the line of an own
+  // edge, or an own vertex on the line of one of its edges (within `tol`). Only such triangles
+  // have an edge collinear with an own edge or through an own vertex, all that the masks read;
+  // the others (most of what the broad phase's fattened box meets) are left out of every pass.
+  bool touches(const GroupTriangle& t, float tol) const {
+    const GroupTriangle& own = triangles_.front();
+    const float tol_sq = tol * tol;
+    const auto on_line = [&](const b2Vec2& a, const b2Vec2& b, const b2Vec2& p) {
+      const b2Vec2 d = b - a;
+      const float off = b2Cross(d, p - a);
+      return off * off <= tol_sq * d.LengthSquared();
+    };
+    for (int i = 0; i < 3; ++i) {
+      for (const b2Vec2& p : t.v) {
+        if (on_line(own.v[i], own.v[next(i)], p)) return true;
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      for (const b2Vec2& p : own.v) {
+        if (on_line(t.v[k], t.v[next(k)], p)) return true;
+      }
+    }
+    return false;
   }
 
   const b2Fixture& self_;
-  const TriangleKeys& keys_;
-  std::vector<Entry>& shapes_;
+  const b2Body& body_;
+  std::vector<GroupTriangle>& triangles_;
+  // The tolerance's scale (see `tolerance`): 16 FLT_EPSILON.
+  static constexpr float coincidence_epsilons = 16;
+  float own_scale_ = 0;      // the largest magnitude of the own triangle's coordinates
+  bool placed_ = false;      // a triangle of another frame was placed in this one
+  float other_origins_ = 0;  // the largest magnitude of those frames' origins
 };
 
-// The outline edges (edges of one triangle only) leaving and entering a vertex.
+// The segment a→b as a line: where points lie along it and how far off it.
+struct Line {
+  b2Vec2 from;
+  b2Vec2 unit;
+  float length;
+
+  Line(const b2Vec2& a, const b2Vec2& b) : from(a) {
+    const b2Vec2 d = b - a;
+    length = d.Length();
+    unit = (1.0f / length) * d;
+  }
+  float along(const b2Vec2& x) const { return b2Dot(x - from, unit); }
+  float off(const b2Vec2& x) const { return b2Cross(unit, x - from); }
+};
+
+// Parameters along a line: [lo, hi].
+struct Interval {
+  float lo;
+  float hi;
+};
+
+// An edge of the group, from a to b (its triangle on its left).
+struct Segment {
+  b2Vec2 a;
+  b2Vec2 b;
+};
+
+// What the edges among `edges` running the other way along `line` cover of it (both ends within
+// `tol` of the line; their triangles lie on its other side): one interval per edge, into `out`.
+void opposite_cover(const std::vector<Segment>& edges, const Line& line, float tol,
+                    std::vector<Interval>& out) {
+  out.clear();
+  for (const Segment& e : edges) {
+    if (b2Dot(e.b - e.a, line.unit) >= 0) continue;
+    if (std::abs(line.off(e.a)) > tol || std::abs(line.off(e.b)) > tol) continue;
+    out.push_back({line.along(e.b), line.along(e.a)});
+  }
+}
+
+// True when the intervals cover [0, length] with no gap wider than `tol` (sorts them).
+bool covers_wholly(std::vector<Interval>& cover, float length, float tol) {
+  std::sort(cover.begin(), cover.end(),
+            [](const Interval& x, const Interval& y) { return x.lo < y.lo; });
+  float reach = 0;
+  for (const Interval& i : cover) {
+    if (i.lo > reach + tol) break;
+    reach = std::max(reach, i.hi);
+  }
+  return reach >= length - tol;
+}
+
+// True when an interval covers the line just before `t` (reaching `t` within `tol`), or just
+// after it.
+bool covers_before(const std::vector<Interval>& cover, float t, float tol) {
+  return std::any_of(cover.begin(), cover.end(),
+                     [&](const Interval& i) { return i.lo < t - tol && i.hi >= t - tol; });
+}
+bool covers_after(const std::vector<Interval>& cover, float t, float tol) {
+  return std::any_of(cover.begin(), cover.end(),
+                     [&](const Interval& i) { return i.hi > t + tol && i.lo <= t + tol; });
+}
+
+// The outline pieces (the stretches of the group's edges that no opposite edge covers) entering
+// and leaving a vertex.
 struct VertexOutline {
   b2Vec2 in{0, 0};
   b2Vec2 out{0, 0};
   int ins = 0;
   int outs = 0;
 
-  // Counts triangle `p`'s outline edges at the vertex `at` (its edges found in no other triangle
-  // of the body: `is_outline`).
-  template <class IsOutline>
-  void add(const b2PolygonShape& p, const TriangleKeys& keys, std::uint64_t at,
-           const IsOutline& is_outline) {
-    for (int i = 0; i < 3; ++i) {
-      const int j = i < 2 ? i + 1 : 0;
-      if (keys.v[i] != at && keys.v[j] != at) continue;
-      if (!is_outline(keys.v[i], keys.v[j])) continue;
-      const b2Vec2 edge = p.m_vertices[j] - p.m_vertices[i];
-      if (keys.v[i] == at) {
-        out = edge;
-        ++outs;
-      } else {
-        in = edge;
+  // Gathers the pieces at `at` from every edge of `edges` that ends at it, starts at it, or (a
+  // T-junction) passes through it. Only the stretch next to `at` counts: a neighbour's edge
+  // covered elsewhere in part still bounds the outline here. What covers such a stretch passes
+  // through `at` or ends there too, so the cover is looked for among these edges alone.
+  void gather(const std::vector<Segment>& edges, const b2Vec2& at, float tol,
+              std::vector<Interval>& cover) {
+    const float tol_sq = tol * tol;
+    thread_local std::vector<Segment> near;  // the edges through `at`
+    near.clear();
+    for (const Segment& e : edges) {
+      const b2Vec2 edge = e.b - e.a;
+      const float off = b2Cross(edge, at - e.a);
+      if (off * off <= tol_sq * edge.LengthSquared()) near.push_back(e);
+    }
+    for (const Segment& e : near) {
+      const bool starts = (e.a - at).LengthSquared() <= tol_sq;
+      const bool ends = !starts && (e.b - at).LengthSquared() <= tol_sq;
+      const Line line(e.a, e.b);
+      const float s = starts ? 0 : ends ? line.length : line.along(at);
+      if (!starts && !ends && (s <= tol || s >= line.length - tol)) continue;  // off its ends
+      opposite_cover(near, line, tol, cover);
+      if (!starts && !covers_before(cover, s, tol)) {
+        in = e.b - e.a;
         ++ins;
+      }
+      if (!ends && !covers_after(cover, s, tol)) {
+        out = e.b - e.a;
+        ++outs;
       }
     }
   }
 
-  // A simple outline vertex (one edge in, one out) turning by less than a corner, or reflex.
+  // A simple outline vertex (one piece in, one out) turning by less than a corner, or reflex.
   bool flat_or_reflex() const {
     return ins == 1 && outs == 1 &&
            b2Cross(in, out) <= flat_outline_sine * in.Length() * out.Length();
@@ -158,20 +273,30 @@ struct VertexOutline {
 
 InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   const b2PolygonShape* own = triangle_of(fixture);
+  if (!own) return {};
   const b2Body& body = *fixture.GetBody();
-  if (!own || (body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr)) return {};
+  const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
+  if (alone && body.GetType() != b2_staticBody) return {};
 
-  const TriangleKeys keys(*own);
-  thread_local std::vector<Neighbours::Entry> scratch;
-  Neighbours near(fixture, keys, scratch);
-  near.collect();
-  if (near.found().empty()) return {};
+  thread_local std::vector<GroupTriangle> scratch;
+  Group group(fixture, *own, scratch);
+  group.collect();
+  const std::vector<GroupTriangle>& triangles = group.triangles();
+  if (triangles.size() == 1) return {};
+  const float tol = group.tolerance();
+  const GroupTriangle& self = triangles.front();
+  thread_local std::vector<Segment> edges;
+  edges.clear();
+  for (const GroupTriangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) edges.push_back({t.v[k], t.v[next(k)]});
+  }
 
+  thread_local std::vector<Interval> cover;
   InternalEdges masks;
   for (int i = 0; i < 3; ++i) {
-    if (near.shared(keys.v[i], keys.v[i < 2 ? i + 1 : 0])) {
-      masks.edges |= static_cast<std::uint8_t>(1u << i);
-    }
+    const Line line(self.v[i], self.v[next(i)]);
+    opposite_cover(edges, line, tol, cover);
+    if (covers_wholly(cover, line.length, tol)) masks.edges |= static_cast<std::uint8_t>(1u << i);
   }
   for (int i = 0; i < 3; ++i) {
     const bool out_internal = (masks.edges >> i) & 1;
@@ -179,35 +304,15 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
     // A corner of the outline made by this triangle's own two edges: every direction between
     // their normals is the outline's, as for a lone triangle.
     if (!out_internal && !in_internal) continue;
-    // Both edges internal: the vertex is inside the body, or on the outline between other
+    // Both edges internal: the vertex is inside the group, or on the outline between other
     // triangles' edges (a fan's apex touching the top), whose own pairs carry its contact with
     // their edges' normals; none of this triangle's pairs may push there.
     if (!(out_internal && in_internal)) {
       // One edge internal: closed where the outline through the vertex is flat or reflex. Every
-      // triangle with this vertex is among the neighbours, so the body's outline edges there are
-      // the edges at it that one triangle only has (this one or a neighbour).
-      const std::uint64_t at = keys.v[i];
-      thread_local std::vector<const Neighbours::Entry*> around;  // the neighbours with `at`
-      around.clear();
-      for (const Neighbours::Entry& e : near.found()) {
-        if (e.keys.has_vertex(at)) around.push_back(&e);
-      }
-      // An edge at `at` is shared only with triangles that have `at`.
-      const auto shared_around = [&](std::uint64_t p, std::uint64_t q, const void* except) {
-        for (const Neighbours::Entry* e : around) {
-          if (e != except && e->keys.has_edge(p, q)) return true;
-        }
-        return false;
-      };
+      // triangle touching the vertex is in the group found, so the outline pieces there are all
+      // seen.
       VertexOutline outline;
-      outline.add(*own, keys, at, [&](std::uint64_t p, std::uint64_t q) {
-        return !shared_around(p, q, nullptr);
-      });
-      for (const Neighbours::Entry* e : around) {
-        outline.add(*e->shape, e->keys, at, [&](std::uint64_t p, std::uint64_t q) {
-          return !keys.has_edge(p, q) && !shared_around(p, q, e);
-        });
-      }
+      outline.gather(edges, self.v[i], tol, cover);
       if (!outline.flat_or_reflex()) continue;
     }
     masks.closed_vertices |= static_cast<std::uint8_t>(1u << i);
@@ -215,4 +320,10 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   return masks;
 }
 
-}  // namespace dyop::box2d::detail
+}  // namespace detail
+
+InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
+  return detail::triangle_internal_edges(fixture);
+}
+
+}  // namespace dyop::box2d

@@ -8,6 +8,7 @@
 #include <optional>
 #include <typeinfo>
 
+#include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_measurement.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
@@ -53,6 +54,21 @@ void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
   });
 }
 
+// The static bodies near a contact of `p` and `q` changed (one was added, destroyed, moved or
+// made static or not): static bodies share edges with each other, so every contact of a
+// non-static one of the two with a static body finds its masks again; a moving body's contact
+// list is short. (A static body's own list is not walked: its contacts are with moving bodies,
+// each told through its own contact with the changed body, as above.)
+void static_neighbourhood_changed(const b2Body& p, const b2Body& q) {
+  for (const b2Body* body : {&p, &q}) {
+    if (body->GetType() == b2_staticBody) continue;
+    for (const b2ContactEdge* e = body->GetContactList(); e; e = e->next) {
+      if (e->other->GetType() != b2_staticBody) continue;
+      if (TriangleContact* c = TriangleContact::ours(e->contact)) c->forget_internal_edges();
+    }
+  }
+}
+
 // Bits 0..2 of one triangle's half of a pair's masks: A's (`high` false) or B's.
 InternalEdges half(InternalEdges m, bool high) {
   const int shift = high ? 3 : 0;
@@ -60,11 +76,24 @@ InternalEdges half(InternalEdges m, bool high) {
           static_cast<std::uint8_t>((m.closed_vertices >> shift) & 7)};
 }
 
-// Between steps, with the rule on: see `forget_internal_edges_between`.
+// With the rule on: between steps, see `forget_internal_edges_between` and
+// `static_neighbourhood_changed` (a body made dynamic by `SetType` has already changed type when
+// its contacts are destroyed, so every change between steps tells the static contacts); at any
+// time, a contact going away whose masks no longer hold with a static body (a static body moved
+// away beyond the broad phase's margin: the broad phase ends its contacts in the step) tells them
+// too.
 void fixtures_changed_near(const b2Contact& c) {
+  if (!installation().setting.internal_edges) return;
   const b2Body& a = *c.GetFixtureA()->GetBody();
-  if (installation().setting.internal_edges && !a.GetWorld()->IsLocked()) {
-    forget_internal_edges_between(a, *c.GetFixtureB()->GetBody());
+  const b2Body& b = *c.GetFixtureB()->GetBody();
+  if (!a.GetWorld()->IsLocked()) {
+    forget_internal_edges_between(a, b);
+    static_neighbourhood_changed(a, b);
+    return;
+  }
+  const TriangleContact* ours = TriangleContact::ours(const_cast<b2Contact*>(&c));
+  if (ours && ours->static_stamp_stale(installation().setting.epoch)) {
+    static_neighbourhood_changed(a, b);
   }
 }
 
@@ -102,7 +131,21 @@ TriangleContact* TriangleContact::ours(b2Contact* c) {
   return typeid(*c) == typeid(TriangleContact) ? static_cast<TriangleContact*>(c) : nullptr;
 }
 
+bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
+  const std::uint16_t found = memory_.internal_edges_stamp;
+  return found != 0 && found != internal_edges_stamp(epoch) &&
+         (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
+          m_fixtureB->GetBody()->GetType() == b2_staticBody);
+}
+
 InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
+  // Found before under another stamp, with a static body: its static neighbours may have moved,
+  // and the pair's other static contacts may not see it in their own stamps.
+  if (memory_.internal_edges_stamp != 0 &&
+      (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
+       m_fixtureB->GetBody()->GetType() == b2_staticBody)) {
+    static_neighbourhood_changed(*m_fixtureA->GetBody(), *m_fixtureB->GetBody());
+  }
   // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
   // the two bodies made or destroyed between steps) clears them all.
@@ -161,6 +204,14 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
                     fa->GetBody()->GetTransform(),
                     static_cast<const b2PolygonShape*>(fb->GetShape()),
                     fb->GetBody()->GetTransform());
+}
+
+void forget_internal_edges(b2World& world) {
+  for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) {
+    if (detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
+      ours->forget_internal_edges();
+    }
+  }
 }
 
 }  // namespace dyop::box2d

@@ -7,10 +7,23 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 
+#include <cstring>
+
 #include "dyop/box2d.hpp"
 #include "recycling.hpp"
 
 namespace dyop::box2d::detail {
+
+// `h` with `body`'s frame folded in when it is static (its type too: a body made static or not
+// folds differently); a moving body's frame is not part of any mask.
+inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
+  if (body.GetType() != b2_staticBody) return h;
+  std::uint32_t words[4];
+  static_assert(sizeof(b2Transform) == sizeof words, "b2Transform is four floats");
+  std::memcpy(words, &body.GetTransform(), sizeof words);
+  for (const std::uint32_t w : words) h = (h ^ w) * 0x9E3779B1u;  // Knuth's multiplicative hash
+  return h;
+}
 
 // Box2D's contact for a polygon pair made while the plug-in is installed: `Evaluate` is the
 // plug-in's evaluation with whatever is installed at the time (Box2D's own answer once
@@ -31,24 +44,33 @@ class TriangleContact final : public b2Contact {
   static TriangleContact* ours(b2Contact* c);
 
   // What its internal-edge masks would be found under now (`ContactMemory::internal_edges_stamp`):
-  // install `epoch` and its world's fixture proxies, never 0. Why the proxy count: it is the
-  // world's own and moves whenever a fixture of the world is created or destroyed (a fixture
-  // added next to a triangle, or one taken away from under a body resting elsewhere on its
-  // neighbour, changes that neighbour's masks), in O(1). Folded with the install so that a change
-  // of either gives another stamp (short of a multiple of 2^16 proxies). Inline: every full
-  // evaluation with the rule on asks.
+  // install `epoch`, its world's fixture proxies and the frames of its static bodies, never 0. Why
+  // the proxy count: it is the world's own and moves whenever a fixture of the world is created or
+  // destroyed (a fixture added next to a triangle, or one taken away from under a body resting
+  // elsewhere on its neighbour, changes that neighbour's masks), in O(1). Why a static body's
+  // frame: static bodies share edges with each other, so moving one (`SetTransform`) or making it
+  // static or not (`SetType`) changes its triangles' masks, and nothing else in the world records
+  // a move within the broad phase's margin. Folded with the install so that a change of any gives
+  // another stamp (short of a 16-bit collision). Inline: every full evaluation with the rule on
+  // asks.
   std::uint16_t internal_edges_stamp(std::uint8_t epoch) const {
+    const b2Body& a = *m_fixtureA->GetBody();
     const auto proxies = static_cast<std::uint32_t>(
-        m_fixtureA->GetBody()->GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
-    const auto stamp = static_cast<std::uint16_t>(proxies * 257u + epoch);
+        a.GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
+    std::uint32_t h = proxies * 257u + epoch;
+    h = fold_static_frame(h, a);
+    h = fold_static_frame(h, *m_fixtureB->GetBody());
+    const auto stamp = static_cast<std::uint16_t>(h ^ (h >> 16));
     return stamp != 0 ? stamp : 1;
   }
 
   // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp`: each
   // triangle's half taken from another contact between the same two bodies that has the same
-  // fixture and masks found under `stamp`, else found from the fixture's body
+  // fixture and masks found under `stamp`, else found from the fixture's edge group
   // (`triangle_internal_edges`). A box on a ground finds a ground triangle's masks once for all
-  // its fixtures touching it.
+  // its fixtures touching it. Masks found again under a new stamp with a static body in the pair
+  // mean its static neighbourhood changed: the pair's other contacts with static bodies find
+  // theirs again too (see `static_neighbourhood_changed` in the .cpp).
   InternalEdges find_internal_edges(std::uint16_t stamp) const;
 
   // The manifold it would compute now with nothing kept (`measurement::evaluate_afresh`), its
@@ -57,6 +79,10 @@ class TriangleContact final : public b2Contact {
 
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
   void forget_internal_edges() { memory_.internal_edges_stamp = 0; }
+
+  // True when its masks were found under a stamp that no longer holds under `epoch` and a body of
+  // the pair is static: the static bodies near it changed (or the world's fixtures).
+  bool static_stamp_stale(std::uint8_t epoch) const;
 
  private:
   TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);

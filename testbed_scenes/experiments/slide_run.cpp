@@ -16,8 +16,9 @@ std::vector<scenes::Runner> slide_runners(bool quick) {
 }
 
 SlideRun run_slide(const scenes::Runner& runner, int steps, std::uint64_t seed,
-                   const box2d::Config& config) {
-  scenes::WorldScene scene("slide", runner, seed, config, *scenes::detail::find_builder("slide"));
+                   const box2d::Config& config, const std::string& scene_name) {
+  scenes::WorldScene scene(scene_name, runner, seed, config,
+                           *scenes::detail::find_builder(scene_name));
   const std::vector<scenes::Slider>& sliders = scene.build().sliders;
   SlideRun run;
   std::vector<b2Vec2> start;

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The `slide` scene side by side under Box2D's own contact and the plug-in's backends, for
-/// `dyop compare`'s slide section: each runner's figures, its sliders' paths and its final state.
+/// The sliding scenes (`slide`, `tiles`) side by side under Box2D's own contact and the plug-in's
+/// backends, for `dyop compare`'s slide section: each runner's figures, its sliders' paths and
+/// its final state.
 
 #include <cstdint>
 #include <string>
@@ -25,15 +26,16 @@ struct SliderPath {
   std::vector<double> height;  ///< height of its centre of mass above where it started (m)
 };
 
-/// The `slide` scene run under one runner.
+/// A sliding scene run under one runner.
 struct SlideRun {
   scenes::SceneMetrics metrics;           ///< its figures (`metrics.slide` holds the sliders')
   std::vector<SliderPath> paths;  ///< one per slider, in `metrics.slide->sliders` order
   scenes::Drawing final_state;            ///< the world after the last step
 };
 
-/// Runs `slide` for `steps` steps under `runner` with `config`, recording the paths.
+/// Runs `scene` (a scene with sliders: `slide` or `tiles`) for `steps` steps under `runner` with
+/// `config`, recording the paths.
 SlideRun run_slide(const scenes::Runner& runner, int steps, std::uint64_t seed,
-                   const box2d::Config& config);
+                   const box2d::Config& config, const std::string& scene = "slide");
 
 }  // namespace dyop::experiments

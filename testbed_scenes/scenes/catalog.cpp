@@ -56,6 +56,11 @@ const std::vector<Entry>& entries() {
         "across a junction",
         360, 300},
        detail::build_slide},
+      {{"tiles",
+        "boxes, L bodies and wheels launched along grounds of 0.5 m tiles: one body, a body per "
+        "tile, 8x8 chunks, T-junctions, tiles added and removed under the sliders",
+        360, 300},
+       detail::build_tiles},
   };
   return list;
 }

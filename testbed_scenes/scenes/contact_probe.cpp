@@ -44,7 +44,10 @@ std::size_t ContactProbe::PairHash::operator()(
   return a ^ (std::hash<const void*>()(p.second) + 0x9e3779b97f4a7c15ull + (a << 6) + (a >> 2));
 }
 
-CollideRule::CollideRule(const b2World& world) {
+CollideRule::CollideRule(const b2World& world) { refresh(world); }
+
+void CollideRule::refresh(const b2World& world) {
+  proxy_.clear();
   const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
   ProxyCollector collector{&bp, &proxy_};
   b2AABB everything;

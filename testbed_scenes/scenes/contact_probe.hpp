@@ -47,6 +47,9 @@ class CollideRule {
   /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
   explicit CollideRule(const b2World& world);
 
+  /// Records them again: fixtures were created, destroyed, enabled or disabled since.
+  void refresh(const b2World& world);
+
   /// What the next step of `world` does with `contact`, one of `world`'s contacts.
   CollideAction action(const b2World& world, const b2Contact& contact) const;
 
@@ -58,6 +61,10 @@ class ContactProbe {
  public:
   /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
   ContactProbe(box2d::Backend backend, const b2World& world);
+
+  /// `world`'s fixtures changed between steps (created, destroyed, enabled or disabled): its
+  /// proxies are recorded again.
+  void fixtures_changed(const b2World& world) { rule_.refresh(world); }
 
   /// What the next step's `Collide` will update.
   struct Updates {

@@ -25,7 +25,9 @@ WorldBuild build_pyramid(World& world, workloads::Random& rng) {
       top = add_split_box(world, b2Vec2(x, kHalf + b2_polygonRadius + row * pitch), kHalf);
     }
   }
-  return {{top}, {}};
+  WorldBuild build;
+  build.watched.push_back(top);
+  return build;
 }
 
 WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
@@ -60,7 +62,9 @@ WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
       }
     }
   }
-  return {{top}, {}};
+  WorldBuild build;
+  build.watched.push_back(top);
+  return build;
 }
 
 }  // namespace dyop::scenes::detail

@@ -37,15 +37,7 @@ constexpr float kLaneGap = 4.0f;
 // Every lane's ground runs from kStart to kStart + kLength: 6 s at 6 m/s (the full run) from x = 0.
 constexpr float kStart = -2.0f;
 constexpr float kLength = 40.0f;
-constexpr float kBoxHalf = 0.25f;    // m: the 0.5 m box
-constexpr float kLSquare = 0.25f;    // m: the L is three such squares, each split in two
-constexpr float kWheelRadius = 0.4f;  // m, to its vertices
-// Sides of the wheel: a polygon loses speed at each vertex it rolls over, 16 let it roll a few
-// metres. At 1.8 m/s on 0.4 m, v²/r < g: it rolls without hopping.
-constexpr int kWheelSides = 16;
 constexpr double kJitter = 0.001;  // m, launch position noise from the seed
-const Material kIce{1.0f, 0.0f};
-const Material kRubber{};  // friction 0.6, as every other scene
 
 const char* ground_name(const Lane& lane) {
   switch (lane.cells) {
@@ -80,32 +72,6 @@ void add_ground(World& world, const Lane& lane, float top, const Material& mater
   }
 }
 
-// An L of three kLSquare squares (two along the ground, one on the left one), its corner at
-// `corner`: six triangle fixtures.
-b2Body* add_l(World& world, const b2Vec2& corner) {
-  b2Body* body = add_body(world, b2_dynamicBody, corner);
-  add_triangle_block(body, 0, 0, 2 * kLSquare, kLSquare, kLSquare, kIce);
-  add_triangle_block(body, 0, kLSquare, kLSquare, 2 * kLSquare, kLSquare, kIce);
-  return body;
-}
-
-// A regular polygon of kWheelSides triangles fanned from its centre, a side down on y = `top`.
-b2Body* add_wheel(World& world, float x, float top) {
-  constexpr double kPi = 3.14159265358979323846;
-  const double half_angle = kPi / kWheelSides;
-  b2Body* body = add_body(world, b2_dynamicBody,
-                          b2Vec2(x, top + float(kWheelRadius * std::cos(half_angle))));
-  auto rim = [&](int i) {
-    const double a = -kPi / 2 - half_angle + 2 * half_angle * i;
-    return b2Vec2(float(kWheelRadius * std::cos(a)), float(kWheelRadius * std::sin(a)));
-  };
-  // rim(i + 1) modulo the sides: the last triangle shares the first one's edge bit for bit.
-  for (int i = 0; i < kWheelSides; ++i) {
-    add_triangle(body, b2Vec2(0, 0), rim(i), rim((i + 1) % kWheelSides), kRubber);
-  }
-  return body;
-}
-
 }  // namespace
 
 WorldBuild build_slide(World& world, workloads::Random& rng) {
@@ -114,29 +80,14 @@ WorldBuild build_slide(World& world, workloads::Random& rng) {
     const Lane& lane = kLanes[i];
     const float top = -kLaneGap * static_cast<float>(i);
     const bool ice = lane.body != nullptr && std::string(lane.body) != "wheel";
-    add_ground(world, lane, top, ice ? kIce : kRubber);
-    // Cores touching: Box2D's skins overlap by 2 cm and the position solver parts them without
-    // any velocity, so a glide starts level.
+    add_ground(world, lane, top, ice ? slider_ice : slider_rubber);
     const float x = jitter(rng, kJitter);
     if (lane.body == nullptr) {  // at rest, its middle on the junction of two cells at x = 0
-      build.watched.push_back(add_split_box(world, b2Vec2(x, top + kBoxHalf), kBoxHalf, kRubber));
+      build.watched.push_back(
+          add_split_box(world, b2Vec2(x, top + slider_box_half), slider_box_half, slider_rubber));
       continue;
     }
-    Slider s;
-    s.speed = lane.speed;
-    s.figures.body = lane.body;
-    s.figures.ground = ground_name(lane);
-    s.figures.rolling = !ice;
-    if (s.figures.body == "box") {
-      s.body = add_split_box(world, b2Vec2(x, top + kBoxHalf), kBoxHalf, kIce);
-    } else if (s.figures.body == "L") {
-      s.body = add_l(world, b2Vec2(x, top));
-    } else {
-      s.body = add_wheel(world, x, top);
-      s.body->SetAngularVelocity(-lane.speed / kWheelRadius);  // rolling along +x
-    }
-    s.body->SetLinearVelocity(b2Vec2(lane.speed, 0));
-    build.sliders.push_back(std::move(s));
+    build.sliders.push_back(launch_slider(world, lane.body, ground_name(lane), x, top, lane.speed));
   }
   return build;
 }

@@ -55,6 +55,10 @@ void WorldScene::check_manifolds() {
 }
 
 void WorldScene::step() {
+  if (build_.before_step) {
+    build_.before_step(steps_);
+    probe_->fixtures_changed(world_->get());
+  }
   const bool measured = steps_ > 0;  // step 1's contacts are created inside Step
   const ContactProbe::Updates u = probe_->before_step(world_->get(), errors_);
 

@@ -39,6 +39,9 @@ struct WorldBuild {
   std::vector<b2Body*> watched;
   /// Bodies launched along +x (`slide`): the scene reports `SceneMetrics::slide` when there are.
   std::vector<Slider> sliders;
+  /// Called before each step with the number of steps done, untimed (scene `tiles`: a ground whose
+  /// tiles are added and removed under the sliders); empty: nothing.
+  std::function<void(int steps_done)> before_step;
 };
 
 /// Steps a structure is given to settle before its top bodies are watched (1 s): a pyramid of

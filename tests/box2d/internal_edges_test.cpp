@@ -1,17 +1,15 @@
 // `Config::internal_edges` in real worlds: frictionless bodies (a box of two triangle fixtures, a
 // concave L of six) launched along flat grounds of triangulated square cells glide as over a
 // one-piece ground, with the exact backends; with the switch off, the ghost collisions on the
-// internal edges are there (printed for the record). Also: the index follows fixtures added and
-// destroyed between steps, edges shared across bodies stay outline edges, and nothing falls
-// through after a deep penetration across an internal edge.
+// internal edges are there (printed for the record). Also: the masks follow fixtures added and
+// destroyed between steps, and nothing falls through after a deep penetration across an internal
+// edge. (Edges shared across bodies: shared_edges_across_bodies_test.cpp.)
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <utility>
 #include <vector>
 
 #include "scene.hpp"
@@ -319,37 +317,6 @@ TEST(InternalEdges, BoxGlidesOntoAGroundExtendedUnderItMidRun) {
   EXPECT_LE(max_vertical, 0.05f);
   EXPECT_LE(max_speed_change, 0.01f * speed);
   ASSERT_TRUE(uninstall().ok());
-}
-
-// Edges are internal only within a body: on a ground of one body per triangle, under a slider of
-// one triangle, nothing is internal, the rule never applies, and the world is bit-identical to one
-// with the rule off (the slider trips there as with Box2D's own contact; joining the ground into
-// one body is the remedy).
-TEST(InternalEdges, EdgesSharedAcrossBodiesStayOutlineEdges) {
-  auto run = [](const Config& config) {
-    EXPECT_TRUE(install(Backend::Dyop, config).ok());
-    World world;
-    constexpr float cell = 0.25f;
-    for (float x = -2.0f; x < 14.0f; x += cell) {
-      b2Body* piece = add_body(world, b2_staticBody, b2Vec2(0, 0));
-      add_triangle(piece, b2Vec2(x, 0), b2Vec2(x, -cell), b2Vec2(x + cell, 0), kIce);
-      piece = add_body(world, b2_staticBody, b2Vec2(0, 0));
-      add_triangle(piece, b2Vec2(x + cell, 0), b2Vec2(x, -cell), b2Vec2(x + cell, -cell), kIce);
-    }
-    b2Body* box = add_body(world, b2_dynamicBody, b2Vec2(0, 0));
-    add_triangle(box, b2Vec2(-0.25f, 0), b2Vec2(0.25f, 0), b2Vec2(0, 0.3f), kIce);
-    box->SetLinearVelocity(b2Vec2(2.0f, 0));
-    for (int i = 0; i < 3 * kStepsPerSecond; ++i) world.step();
-    const std::uint64_t rule_pairs = stats().internal_edge_pairs;
-    EXPECT_TRUE(uninstall().ok());
-    return std::make_pair(box->GetTransform(), rule_pairs);
-  };
-  Config off = rule_on();
-  off.internal_edges = false;
-  const auto [with_rule, pairs] = run(rule_on());
-  const auto [without, unused] = run(off);
-  EXPECT_EQ(pairs, 0u);
-  EXPECT_EQ(std::memcmp(&with_rule, &without, sizeof with_rule), 0);
 }
 
 // A box dropped 0.2 m deep into the ground across an internal edge (its diagonal and a cell

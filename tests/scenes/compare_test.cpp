@@ -75,19 +75,24 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   EXPECT_EQ(std::count(slide.begin(), slide.end(), '\n'), 3 * 8 + 1);
   for (const char* runner : {"box2d-own", "dyop", "sat"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / ("slide_" + std::string(runner) + ".svg"))) << runner;
+    EXPECT_TRUE(std::filesystem::exists(dir / ("tiles_" + std::string(runner) + ".svg"))) << runner;
   }
+  // Its tiles part: 6 grounds, 3 sliders each.
+  EXPECT_NE(report.find("## Sliding over tiled grounds"), std::string::npos);
+  const std::string tiles = read(dir / "tiles.csv");
+  EXPECT_EQ(std::count(tiles.begin(), tiles.end(), '\n'), 3 * 18 + 1);
   // The worlds-on-threads section: 1, 2 and 4 rain worlds under each of the two runners.
   EXPECT_NE(report.find("## Worlds on threads"), std::string::npos);
   const std::string threads = read(dir / "threads.csv");
   EXPECT_EQ(std::count(threads.begin(), threads.end(), '\n'), 3 * 2 + 1);
   // Every section's files are listed in the report.
-  for (const char* file : {"inworld.csv", "slide.csv", "skips.csv", "paper_methods.csv",
+  for (const char* file : {"inworld.csv", "slide.csv", "tiles.csv", "skips.csv", "paper_methods.csv",
                            "threads.csv"}) {
     EXPECT_NE(report.find(std::string("`") + file + "`"), std::string::npos) << file;
   }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
     for (const char* chart : {"time_per_method.svg", "time_vs_error.svg", "paper_figure7.svg",
-                              "slide_paths.svg"}) {
+                              "slide_paths.svg", "tiles_paths.svg"}) {
       EXPECT_GT(std::filesystem::file_size(dir / chart), 1000u) << chart;
       EXPECT_NE(report.find(std::string("](") + chart + ")"), std::string::npos) << chart;
     }

@@ -180,19 +180,30 @@ struct Config {
   bool lin_canny_cache = true;
 
 
-  /// Not a skip: it changes the answer (on by default). Edges two triangle fixtures of the same
-  /// body share are internal to that body (the same two vertices in the body frame, either
-  /// order, bit for bit as `b2PolygonShape` stores them); the outline's flat and reflex vertices
-  /// next to them, and vertices whose two edges are both internal, are closed: no other triangle
-  /// may push there. The exact backends (`Dyop`, `Sat`) never push along them
-  /// (`Query::internal_edges`), so bodies slide over triangulated grounds without ghost
-  /// collisions; edges shared by two bodies stay outline edges. A contact finds its two
-  /// triangles' masks when the rule first needs them (its pair is not skipped), from the
-  /// fixtures' bodies as they are then (the body's triangles near each one, from the world's
-  /// broad phase), and keeps them in its `ContactMemory`; it finds them again after fixtures of
-  /// its world changed (`ContactMemory::internal_edges_stamp`). The other backends ignore it and
-  /// never look. Off: the world is bit-identical to Box2D's own handling of each fixture alone,
-  /// as the plug-in was without the rule.
+  /// Not a skip: it changes the answer (on by default). A triangle fixture's edge group is the
+  /// triangle fixtures of its body and, for a static body, of every static body (dynamic and
+  /// kinematic bodies keep their edges to themselves). An edge is internal when the group's edges
+  /// collinear with it and running the other way cover it wholly: a neighbour's same edge, or a
+  /// refined neighbour's edges meeting it at T-junctions (an edge covered in part stays an outline
+  /// edge). Points of two frames are one point within 16·FLT_EPSILON of the coordinates'
+  /// magnitude (2 µm per metre from the origin: the rounding of placing each body's frame);
+  /// within one frame the same rule holds, bit-for-bit shared vertices being the usual case. The
+  /// outline's flat and reflex vertices next to internal edges (a vertex inside another
+  /// triangle's edge takes that edge as the outline through it, straight), and vertices whose two
+  /// edges are both internal, are closed: no other triangle may push there
+  /// (`triangle_internal_edges` in `dyop/box2d_internal_edges.hpp` gives a fixture's masks). The
+  /// exact backends (`Dyop`, `Sat`) never push along them (`Query::internal_edges`), so bodies
+  /// slide over triangulated grounds, tile maps and chunked terrain without ghost collisions.
+  /// Polygons of more than three vertices, circles, edges and chains keep Box2D's own handling and
+  /// make no edge internal. A contact finds its two triangles' masks when the rule first needs
+  /// them (its pair is not skipped), from the fixtures as they are then (the group's triangles
+  /// near each one, from the world's broad phase), and keeps them in its `ContactMemory`; it finds
+  /// them again after fixtures of its world or the frames of its static bodies changed
+  /// (`ContactMemory::internal_edges_stamp`), and tells its moving body's other contacts with
+  /// static bodies to do the same (`forget_internal_edges` in `dyop/box2d_internal_edges.hpp`
+  /// for what it cannot see). The other backends ignore it and never look. Off: the world is
+  /// bit-identical to Box2D's own handling of each fixture alone, as the plug-in was without the
+  /// rule.
   bool internal_edges = true;
 
   /// Not a skip either: it may change the answer, within a bound (on by default:
@@ -279,9 +290,9 @@ struct ContactMemory {
   /// world's contact finds them itself (see `internal_edges_stamp`); a caller of
   /// `collide_polygons` sets them.
   InternalEdges internal_edges{};
-  /// A world's contact: what its masks were found under, 0 not yet: the install (see `install`)
-  /// and the number of fixture proxies of the world (any fixture created or destroyed in the world
-  /// changes it), folded into 16 bits. They are found when the rule first needs them, from the two
+  /// A world's contact: what its masks were found under, 0 not yet: the install (see `install`),
+  /// the number of fixture proxies of the world (any fixture created or destroyed in the world
+  /// changes it) and the frames of the pair's static bodies, folded into 16 bits. They are found when the rule first needs them, from the two
   /// fixtures' bodies as they are then, and again when the stamp no longer matches, or after a
   /// contact between the same two bodies was made or destroyed between steps (a fixture of one of
   /// them added, destroyed, moved, enabled or changed type): the contact then sets this to 0.

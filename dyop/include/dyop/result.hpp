@@ -71,8 +71,9 @@ enum class Apart : std::uint8_t {
 /// bodies, the edges and vertices along which no push may leave the body (caller's order: bit i
 /// is A's edge or vertex i, bit 3 + i B's; edge i runs from vertex i to vertex i + 1).
 struct InternalEdges {
-  /// Edges internal to their body (shared with another triangle of the same body): their normals
-  /// are not directions the body's outline allows.
+  /// Edges internal to their body (covered by the other triangles of the body, or of a ground
+  /// made of several bodies: see the Box2D plug-in's `Config::internal_edges`): their normals are
+  /// not directions the body's outline allows.
   std::uint8_t edges = 0;
   /// Closed vertices: no edge axis of the other triangle whose deepest vertex is one of these is
   /// allowed. A vertex is closed where the body's outline is flat or reflex and one of its own

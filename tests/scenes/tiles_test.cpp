@@ -1,0 +1,98 @@
+// The `tiles` scene: with the internal-edge rule, the exact backends let boxes and L bodies glide
+// over every tiled ground (one body, a static body per tile, 8 × 8 chunks, T-junctions in one body
+// and in a body per cell, tiles added and removed under the slider) as over one body, and the
+// wheel roll as far as on one body; Box2D's own contact trips on tiles as bodies and at
+// T-junctions.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <iterator>
+#include <string>
+
+#include "scenes/scene.hpp"
+
+namespace dyop::scenes {
+namespace {
+
+// The bounds for a glide: largest vertical speed (m/s) and smallest travel fraction.
+constexpr double kGlideVerticalSpeed = 0.05;
+constexpr double kGlideTravel = 0.98;
+// A ghost collision: a trip that throws the box up faster than this (m/s).
+constexpr double kTripVerticalSpeed = 0.5;
+// m/s: the wheel's own rolling over its vertices. A 16-gon of 0.4 m rises and falls by
+// r·(1 − cos(π/16)) = 7.7 mm per side; its vertical speed peaks at 0.36 or 0.42 m/s (where its
+// first vertex lands) on every ground under every contact, Box2D's own included; a trip throws it
+// up faster than 1 m/s.
+constexpr double kWheelRollingVerticalSpeed = 0.45;
+// Relative spread of the wheel's travel between grounds and launch points (0.87 to 1.07 of its
+// one-body travel over seeds 0-5 with the rule on), as in `slide`.
+constexpr double kWheelTravelSpread = 0.2;
+constexpr std::uint64_t kSeed = 3;
+const char* const kGrounds[] = {"one-body",    "tiles",            "chunks-8x8",
+                                "t-junctions", "t-junction-tiles", "changing-tiles"};
+
+int full_steps() { return find_scene("tiles")->default_steps; }
+
+const SliderFigures& slider(const SceneMetrics& m, const std::string& body,
+                            const std::string& ground) {
+  for (const SliderFigures& s : m.slide->sliders) {
+    if (s.body == body && s.ground == ground) return s;
+  }
+  throw std::invalid_argument("no " + body + " on " + ground);
+}
+
+TEST(Tiles, EveryGroundHasABoxAnLAndAWheel) {
+  const SceneMetrics m = run_scene("tiles", box2d::Backend::Dyop, 3, kSeed);
+  ASSERT_TRUE(m.slide.has_value());
+  EXPECT_EQ(m.slide->sliders.size(), 3 * std::size(kGrounds));
+  for (const char* ground : kGrounds) {
+    for (const char* body : {"box", "L", "wheel"}) EXPECT_NO_THROW(slider(m, body, ground));
+  }
+}
+
+class ExactBackend : public ::testing::TestWithParam<box2d::Backend> {};
+
+TEST_P(ExactBackend, BoxesAndLBodiesGlideOverEveryTiledGround) {
+  const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
+  for (const char* ground : kGrounds) {
+    for (const char* body : {"box", "L"}) {
+      SCOPED_TRACE(std::string(body) + " on " + ground);
+      const SliderFigures& s = slider(m, body, ground);
+      EXPECT_LE(s.max_vertical_speed, kGlideVerticalSpeed);
+      EXPECT_GE(s.travel, kGlideTravel);
+    }
+  }
+  EXPECT_EQ(m.fallbacks, 0u);
+  EXPECT_FALSE(m.nan_detected);
+}
+
+// A polygon wheel slows at each of its vertices: on every ground its travel stays within
+// kWheelTravelSpread of its travel on one body, and it is thrown up no faster than its own rolling
+// does.
+TEST_P(ExactBackend, WheelRollsOverEveryTiledGroundAsOverOneBody) {
+  const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
+  const SliderFigures& one_body = slider(m, "wheel", "one-body");
+  for (const char* ground : kGrounds) {
+    SCOPED_TRACE(ground);
+    const SliderFigures& s = slider(m, "wheel", ground);
+    EXPECT_NEAR(s.travel / one_body.travel, 1.0, kWheelTravelSpread);
+    EXPECT_LE(s.max_vertical_speed, kWheelRollingVerticalSpeed);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Tiles, ExactBackend,
+                         ::testing::Values(box2d::Backend::Dyop, box2d::Backend::Sat),
+                         [](const ::testing::TestParamInfo<box2d::Backend>& i) {
+                           return std::string(box2d::name(i.param));
+                         });
+
+TEST(Tiles, BoxTripsOnTilesAndTJunctionsUnderBox2DsOwnContact) {
+  const SceneMetrics m = run_scene("tiles", Runner(), full_steps(), kSeed);
+  for (const char* ground : {"tiles", "t-junctions"}) {
+    SCOPED_TRACE(ground);
+    EXPECT_GT(slider(m, "box", ground).max_vertical_speed, kTripVerticalSpeed);
+  }
+}
+
+}  // namespace
+}  // namespace dyop::scenes
