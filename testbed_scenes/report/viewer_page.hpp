@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// `dyop view`'s page: one self-contained HTML file (inline script and style, no network) that
+/// plays a `LockstepRecording` back: both worlds side by side or overlaid, contacts coloured by
+/// agreement, the plug-in's differences from `b2CollidePolygons` marked, a click on a contact
+/// shows its numbers, per-step plots under the view. The script and style are
+/// `report/viewer/viewer.html`, embedded at build time.
+///
+/// The recording travels in the page compressed: every pose, normal, point and separation
+/// quantised to an integer (`position_quantum`, ...), predicted from the steps before (poses:
+/// linearly from the last two steps, so a falling or gliding body costs nothing; a contact: from
+/// the same pair's values one step before). A manifold is kept as Box2D keeps it, in its bodies'
+/// frames (`localNormal`, `localPoint`, each point's `localPoint`, and its separation), so a
+/// resting contact costs nothing either; the page places it from the poses as
+/// `b2WorldManifold::Initialize` does. The residuals as zigzag varints in three streams
+/// (poses, contact structure, contact values), deflated with zlib and base64-encoded; the page
+/// inflates it with the browser's `DecompressionStream("deflate")`.
+///
+/// The page shows step N (1-based: the world after N steps) and pauses there when opened with
+/// `#step=N` in its address (`&view=overlay` overlays the worlds). It writes what it shows into
+/// elements a test can read: `#step`, `#bodies-a`/`-b`, `#contacts-a`/`-b` (touching contacts),
+/// `#agree-a`/`-b`, `#marked-a`/`-b` (contacts with an `EdgeMark`), `#errors` (every script
+/// error; empty when none) and `#status` ("ready" once the first frame is drawn).
+
+#include <iosfwd>
+
+#include "experiments/lockstep_recording.hpp"
+#include "report/json.hpp"
+
+namespace dyop::report {
+
+/// Quanta of the page's numbers. Why: poses to a tenth of a millimetre and 1e-5 rad (0.03 mm
+/// at the rim of a 3 m body) are below a pixel at any zoom that shows a body whole; points in a
+/// body's frame to 10 µm keep a 1 cm sliver's contacts in place; separations to 10 µm, the click
+/// panel's last digit and a hundredth of the agreement tolerance (agreement itself is decided on
+/// the full numbers).
+inline constexpr double position_quantum = 1e-4;    ///< m, poses
+inline constexpr double local_quantum = 1e-4;       ///< m, manifold points in a body's frame
+inline constexpr double angle_quantum = 1e-4;       ///< rad, poses and normals
+inline constexpr double separation_quantum = 1e-4;  ///< m
+
+/// Writes the page for `recording`.
+void write_viewer_page(const experiments::LockstepRecording& recording, std::ostream& out);
+
+/// What the page shows per step, for `dyop view --json` and the browser test: the scene, the
+/// runners, the body and fixture counts, and per step each runner's touching, agreeing and marked
+/// contacts, largest penetration (m) and `b2Profile::collide` (ms).
+Json viewer_summary(const experiments::LockstepRecording& recording);
+
+}  // namespace dyop::report
