@@ -2,9 +2,10 @@
 # Installs whatever Debian 12 packages the project needs and are missing, then configures and
 # builds the Release tree in build/: the targets named (`bash scripts/setup.sh dyop_executable`),
 # or everything. Called by main.sh (the `dyop` program only), test.sh (everything) and
-# browser_test.sh (the program, with DYOP_EXTRA_PACKAGES=chromium); safe to run again. The build's own output goes to build/build.log; standard error gets one progress line
-# per tenth of the build, and the log's end if the build fails. Standard output stays free for
-# the tables of the command that follows.
+# browser_test.sh (the program, with DYOP_EXTRA_PACKAGES=chromium); safe to run again. The
+# build's own output goes to build/build.log; standard error gets one progress line per tenth of
+# the build, and the log's end if the build fails. Standard output stays free for the tables of
+# the command that follows.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
