@@ -17,6 +17,8 @@
 /// the step, from the manifold the step's `Collide` made at the poses before it (as Box2D's
 /// samples draw them).
 
+#include <box2d/b2_math.h>
+
 #include <array>
 #include <cstdint>
 #include <string>

@@ -3,7 +3,8 @@
 headless Chromium opens the page at a step (#step=N), and this checks what it shows.
 
 - the page decoded its recording and drew (#status reads "ready") without a script error
-  (#errors, where the page writes every error, stays empty);
+  (#errors, where the page writes every error, stays empty), and shows the numbers of a contact
+  (#details, as a click on it does);
 - the body, contact, agreeing and marked counts it shows for both runners are the ones the C++
   side recorded for that step (the page counts them from the data it decoded);
 - a screenshot of the slide comparison has content: both runners' colours and many pixels that
@@ -31,9 +32,9 @@ CHROMIUM = ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--hide-s
 # Of the screenshot's pixels, at least this share must differ from the page's backgrounds: the
 # bodies, grounds, contacts and plots cover far more; a blank or failed page covers none.
 MIN_CONTENT_SHARE = 0.03
-# The page shows the largest penetration in mm to 2 decimals from separations quantised to
-# 0.1 mm (report/viewer_page.hpp's separation_quantum): half a quantum plus the display's rounding.
-PENETRATION_MM = 0.05 + 0.005 + 1e-9
+# The page shows the largest penetration in mm to 1 decimal from separations quantised to 0.1 mm
+# (report/viewer_page.hpp's separation_quantum): half a quantum plus the display's rounding.
+PENETRATION_MM = 0.05 + 0.05 + 1e-9
 RUNNER_COLOURS = {"A (blue)": (59, 120, 201), "B (orange)": (224, 123, 31)}
 BACKGROUNDS = [(255, 255, 255), (250, 250, 250)]
 
@@ -112,7 +113,7 @@ def check_counts(dyop, workdir, scene, steps):
                     summary_path], check=True, stdout=subprocess.DEVNULL)
     summary = json.load(open(summary_path))
     shown = steps - 3  # a step other than the first and the last
-    dom = run_chromium(["--dump-dom", "file://%s#step=%d" % (page, shown)])
+    dom = run_chromium(["--dump-dom", "file://%s#step=%d&select=deepest" % (page, shown)])
     if element(dom, "status") != "ready":
         fail("%s: the page is not ready (status %r)" % (scene, element(dom, "status")))
     errors = errors_text(dom)
@@ -121,6 +122,12 @@ def check_counts(dyop, workdir, scene, steps):
     if element(dom, "step") != str(shown):
         fail("%s: the page shows step %r, not %d" % (scene, element(dom, "step"), shown))
     frame = summary["frames"][shown - 1]
+    # The numbers of runner A's deepest contact, as a click shows them: both runners' rows.
+    details = re.search(r'<div id="details"[^>]*>(.*?)</div>', dom, re.S)
+    if frame["touching"][0] > 0 and (details is None or "Contact of fixture" not in details.group(1)
+                                     or not all(r in details.group(1) for r in summary["runners"])):
+        fail("%s: no contact numbers for the deepest contact: %r"
+             % (scene, details and details.group(1)[:300]))
     for k, side in enumerate("ab"):
         expected = {"bodies": summary["bodies"], "contacts": frame["touching"][k],
                     "agree": frame["agreeing"][k], "marked": frame["marked"][k]}
