@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -27,7 +28,13 @@ using experiments::ViewContact;
 using experiments::ViewFrame;
 using experiments::ViewManifold;
 
-std::int64_t quantise(double v, double quantum) { return std::llround(v / quantum); }
+// Non-finite numbers (a world that blew up) go as 0, and magnitudes stay below 2^50 so that the
+// predictions' sums stay exact in the page's doubles (2^53).
+std::int64_t quantise(double v, double quantum) {
+  constexpr double limit = 1e15;
+  const double q = v / quantum;
+  return std::isfinite(q) ? std::llround(std::clamp(q, -limit, limit)) : 0;
+}
 
 // Unsigned LEB128 varints; signed values zigzag-encoded first, so that small residuals of either
 // sign take one byte.
