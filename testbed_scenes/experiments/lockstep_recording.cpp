@@ -149,8 +149,9 @@ WorldIndex index_world(const scenes::World& world, LockstepRecording& out) {
   return index;
 }
 
-std::vector<ViewFrame> record_world(const scenes::Runner& runner, LockstepRecording& out) {
-  const scenes::Installation installed(runner, out.config);
+std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::Config& config,
+                                    LockstepRecording& out) {
+  const scenes::Installation installed(runner, config);
   scenes::SceneWorld scene(out.scene, out.seed);
   scenes::World& world = scene.world();
   const WorldIndex index = index_world(world, out);
@@ -190,7 +191,8 @@ std::vector<ViewFrame> record_world(const scenes::Runner& runner, LockstepRecord
 
 // The paper's triangles on their paths: one kinematic body each, their overlapping pairs handed
 // to the runner's collide function (the plug-in's with one memory per pair, as a contact keeps).
-std::vector<ViewFrame> record_paper(const scenes::Runner& runner, LockstepRecording& out) {
+std::vector<ViewFrame> record_paper(const scenes::Runner& runner, const box2d::Config& config,
+                                    LockstepRecording& out) {
   namespace paper = scenes::paper;
   std::vector<b2PolygonShape> shapes(paper::type_count);
   for (int k = 0; k < paper::type_count; ++k) {
@@ -225,7 +227,7 @@ std::vector<ViewFrame> record_paper(const scenes::Runner& runner, LockstepRecord
       b2Manifold m;
       if (runner) {
         box2d::collide_polygons(&m, *runner, shapes[i], xf[i], shapes[j], xf[j],
-                                &memory[i * paper::type_count + j], out.config);
+                                &memory[i * paper::type_count + j], config);
       } else {
         b2CollidePolygons(&m, &shapes[i], xf[i], &shapes[j], xf[j]);
       }
@@ -275,7 +277,8 @@ float ViewManifold::deepest() const {
 
 LockstepRecording record_lockstep(std::string_view name,
                                   const std::array<scenes::Runner, 2>& runners, int steps,
-                                  std::uint64_t seed, const box2d::Config& config) {
+                                  std::uint64_t seed,
+                                  const std::array<box2d::Config, 2>& configs) {
   if (scenes::find_scene(name) == nullptr) {
     throw std::invalid_argument("no scene called '" + std::string(name) + "'");
   }
@@ -285,11 +288,12 @@ LockstepRecording record_lockstep(std::string_view name,
   out.seed = seed;
   out.steps = steps;
   out.runners = runners;
-  out.config = config;
+  out.configs = configs;
   const bool paper = name == "paper";
   out.time_step = paper ? scenes::paper::step_seconds : double(scenes::time_step);
   for (int r = 0; r < 2; ++r) {
-    out.frames[r] = paper ? record_paper(runners[r], out) : record_world(runners[r], out);
+    out.frames[r] = paper ? record_paper(runners[r], configs[r], out)
+                          : record_world(runners[r], configs[r], out);
   }
   for (int step = 0; step < steps; ++step) {
     agree(out.frames[0][step], out.frames[1][step]);

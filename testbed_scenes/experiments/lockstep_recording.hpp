@@ -120,19 +120,22 @@ struct LockstepRecording {
   int steps = 0;
   double time_step = 0;  ///< seconds per step
   std::array<scenes::Runner, 2> runners;
-  box2d::Config config;  ///< both runners' skips
+  /// Each runner's skips and internal-edge rule (`box2d::Config`; nothing to Box2D's own contact).
+  std::array<box2d::Config, 2> configs;
   std::vector<scenes::DrawShape::Role> bodies;  ///< each body's role (its colour)
   std::vector<ViewFixture> fixtures;
   std::array<std::vector<ViewFrame>, 2> frames;  ///< per runner, one per step
 };
 
-/// Records scene `name` of the catalogue for `steps` steps (≥ 1) under `runners[0]` and then
-/// `runners[1]`, both with `config`. `paper` has no Box2D world: its triangles follow their
+/// Records scene `name` of the catalogue for `steps` steps (≥ 1) under `runners[0]` with
+/// `configs[0]` and then `runners[1]` with `configs[1]` (the same runner twice with two configs
+/// sets skips or the internal-edge rule against each other). `paper` has no Box2D world: its triangles follow their
 /// paths and each step's overlapping pairs go to the runner's collide function directly
 /// (`box2d-own`: `b2CollidePolygons`). Throws `std::invalid_argument` for an unknown scene or
 /// `steps` < 1, `std::runtime_error` for a refused installation.
-LockstepRecording record_lockstep(std::string_view name, const std::array<scenes::Runner, 2>& runners,
-                                  int steps, std::uint64_t seed,
-                                  const box2d::Config& config = box2d::Config::all());
+LockstepRecording record_lockstep(
+    std::string_view name, const std::array<scenes::Runner, 2>& runners, int steps,
+    std::uint64_t seed,
+    const std::array<box2d::Config, 2>& configs = {box2d::Config::all(), box2d::Config::all()});
 
 }  // namespace dyop::experiments

@@ -44,7 +44,11 @@ void write_summary(const experiments::LockstepRecording& r, const std::string& p
     for (const experiments::ViewContact& c : f.contacts) {
       marked += c.mark != experiments::EdgeMark::None;
     }
-    out << "  " << (k == 0 ? "A " : "B ") << name(r.runners[k]) << ": " << f.touching
+    const std::string settings =
+        r.runners[k] ? " (skips " + skip_argument(r.configs[k]) + ", internal-edge rule " +
+                           (r.configs[k].internal_edges ? "on)" : "off)")
+                     : "";
+    out << "  " << (k == 0 ? "A " : "B ") << name(r.runners[k]) << settings << ": " << f.touching
         << " contacts, " << f.agreeing << " agree with " << name(r.runners[1 - k]) << ", "
         << marked << " differ from b2CollidePolygons, largest penetration "
         << report::fmt("%.2f", f.max_penetration * 1000) << " mm\n";
@@ -73,12 +77,25 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
     }
     runners[k] = *r;
   }
-  ParsedSkips skips = parse_skips(c.skip);
-  if (!skips.ok()) {
-    err << "dyop view: --skip: " << skips.error << '\n';
+  if (c.skips.empty() || c.skips.size() > 2 || c.internal_edges.empty() ||
+      c.internal_edges.size() > 2) {
+    err << "dyop view: --skip and --internal-edges take one setting for both runners, or two\n";
     return exit_usage_error;
   }
-  skips.config.internal_edges = c.internal_edges;
+  std::array<box2d::Config, 2> configs;
+  for (int k = 0; k < 2; ++k) {
+    const ParsedSkips skips = parse_skips(c.skips[std::size_t(k) % c.skips.size()]);
+    const std::string& edges = c.internal_edges[std::size_t(k) % c.internal_edges.size()];
+    if (!skips.ok() || (edges != "on" && edges != "off")) {
+      err << "dyop view: "
+          << (skips.ok() ? "--internal-edges takes on or off, not '" + edges + "'"
+                         : "--skip: " + skips.error)
+          << '\n';
+      return exit_usage_error;
+    }
+    configs[k] = skips.config;
+    configs[k].internal_edges = edges == "on";
+  }
   if (c.steps && *c.steps < 1) {
     err << "dyop view: --steps must be at least 1\n";
     return exit_usage_error;
@@ -111,7 +128,7 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
   try {
     recording = experiments::record_lockstep(c.scene, runners,
                                              c.steps.value_or(info->default_steps), c.seed,
-                                             skips.config);
+                                             configs);
     report::write_viewer_page(recording, html.stream());
   } catch (const std::exception& e) {
     err << "dyop view: " << c.scene << " could not run: " << e.what() << '\n';
@@ -134,7 +151,6 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
 void add_view_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ViewCommand>();
   auto steps = std::make_shared<int>(0);
-  auto edges = std::make_shared<std::string>("on");
   std::vector<std::string> names, runners;
   for (const SceneInfo& s : scene_catalog()) names.push_back(s.name);
   for (box2d::Backend b : box2d::all_backends) runners.push_back(box2d::name(b));
@@ -154,21 +170,23 @@ void add_view_command(CLI::App& app, int& exit_code) {
       cmd->add_option("--steps", *steps, "Steps to record (default: the scene's own)")
           ->check(CLI::Range(1, 10000000));
   cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str();
-  cmd->add_option("--skip", args->skip, skip_help() + "\n(both runners)")
+  cmd->add_option("--skip", args->skips,
+                  skip_help() + "\n(once: both runners; twice: A's, then B's)")
       ->capture_default_str()
+      ->expected(1, 2)
       ->check(CLI::Validator([](std::string& text) { return parse_skips(text).error; },
                              "all|none|LIST"));
-  cmd->add_option("--internal-edges", *edges,
-                  "The plug-in's internal-edge rule for both runners (off: Box2D's "
-                  "fixture-by-fixture contacts)")
+  cmd->add_option("--internal-edges", args->internal_edges,
+                  "The plug-in's internal-edge rule (off: Box2D's fixture-by-fixture contacts); "
+                  "once: both runners; twice: A's, then B's")
       ->capture_default_str()
+      ->expected(1, 2)
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--out,-o", args->out, "The page (default: reports/view/SCENE.html)");
   cmd->add_option("--json", args->json,
                   "Write the per-step counts the page shows as JSON to FILE, or '-'");
-  cmd->callback([args, steps, steps_option, edges, &exit_code] {
+  cmd->callback([args, steps, steps_option, &exit_code] {
     if (steps_option->count() > 0) args->steps = *steps;
-    args->internal_edges = *edges == "on";
     exit_code = run_view_command(*args, std::cout, std::cerr);
   });
 }

@@ -33,7 +33,7 @@ class ViewerSection : public CompareSection {
       const double start = c.elapsed();
       const experiments::LockstepRecording r = experiments::record_lockstep(
           s->name, {std::nullopt, box2d::Backend::Dyop}, c.steps(*s), c.options.seed,
-          c.options.skips);
+          {c.options.skips, c.options.skips});
       ViewerPage page{s->name, r.steps, {}, {}, {}, {}};
       std::ostringstream html;
       write_viewer_page(r, html);

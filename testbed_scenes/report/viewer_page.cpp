@@ -302,8 +302,8 @@ Json viewer_summary(const LockstepRecording& r) {
   s["steps"] = r.steps;
   s["time_step"] = r.time_step;
   s["runners"] = {scenes::name(r.runners[0]), scenes::name(r.runners[1])};
-  s["skips"] = scenes::skip_argument(r.config);
-  s["internal_edges"] = r.config.internal_edges;
+  s["skips"] = {scenes::skip_argument(r.configs[0]), scenes::skip_argument(r.configs[1])};
+  s["internal_edges"] = {r.configs[0].internal_edges, r.configs[1].internal_edges};
   s["bodies"] = r.bodies.size();
   s["fixtures"] = r.fixtures.size();
   Json frames = Json::array();

@@ -173,8 +173,19 @@ TEST(ViewCli, TakesAnyTwoRunnersAndTheRuleSwitch) {
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["runners"], nlohmann::json({"sat", "box2d-own"}));
-  EXPECT_EQ(j["internal_edges"], false);
+  EXPECT_EQ(j["internal_edges"], nlohmann::json({false, false}));
   EXPECT_NE(r.err.find("page: "), std::string::npos) << "the summary goes to standard error";
+}
+
+TEST(ViewCli, SetsTheSameBackendAgainstItselfWithTwoSettings) {
+  const auto dir = temp_dir("view_settings");
+  const Outcome r = run("view slide --steps 3 --runner dyop --runner dyop --internal-edges on "
+                        "--internal-edges off --skip all --skip none --out " +
+                        (dir / "s.html").string() + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["internal_edges"], nlohmann::json({true, false}));
+  EXPECT_EQ(j["skips"], nlohmann::json({"all", "none"}));
 }
 
 TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
@@ -183,6 +194,7 @@ TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
   EXPECT_EQ(run("view slide --runner dyop").status, 1) << "two runners";
   EXPECT_EQ(run("view slide --steps 0").status, 1);
   EXPECT_EQ(run("view slide --internal-edges maybe").status, 1);
+  EXPECT_EQ(run("view slide --skip all --skip all --skip all").status, 1);
   EXPECT_EQ(run("view slide --steps 2 --out - --json -").status, 1);
   const auto dir = temp_dir("view_unwritable");
   std::ofstream(dir / "file") << "x";

@@ -62,7 +62,7 @@ TEST(LockstepRecording, OnlyThePluginsInternalEdgeRuleIsMarked) {
   dyop::box2d::Config rule_off;
   rule_off.internal_edges = false;
   const LockstepRecording off =
-      record_lockstep("slide", {std::nullopt, Backend::Dyop}, 60, 0, rule_off);
+      record_lockstep("slide", {std::nullopt, Backend::Dyop}, 60, 0, {rule_off, rule_off});
   int marked_on = 0, removed_on = 0;
   for (int step = 0; step < 60; ++step) {
     EXPECT_EQ(marked(on.frames[0][step]), 0);
