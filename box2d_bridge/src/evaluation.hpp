@@ -16,7 +16,9 @@
 
 #include "dyop/box2d.hpp"
 #include "installation.hpp"
+#include "recycling.hpp"
 #include "stats.hpp"
+#include "triangle_contact.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -28,8 +30,6 @@ struct PolygonPair {
   const b2PolygonShape& b;
   const b2Transform& xf_b;
 };
-
-class TriangleContact;
 
 // The first evaluation: what the two shapes are (valid triangles, invalid ones, larger polygons)
 // and their bounding radii, kept in `memory` (the shapes of a fixture never change).
@@ -81,17 +81,50 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
 
 // Who answered a pair.
 enum class Answer : std::uint8_t {
-  Plugin,          // the backend's method, or a skip: `manifold` is written
-  Box2DTriangles,  // a triangle pair for Box2D's code (backend `Box2D`, or a fallback)
-  Box2DOther,      // uninstalled, or a larger polygon: Box2D's code, as its own contact
+  Plugin,        // the backend's method, a skip or a kept manifold: `manifold` is written
+  Box2DBackend,  // a triangle pair for `Backend::Box2D`: Box2D's code is the backend's answer
+  Box2DFallback, // a triangle pair the method could not answer: Box2D's code, counted
+  Box2DOther,    // uninstalled, or a larger polygon: Box2D's code, as its own contact
 };
 
-// The installed backend's part of an evaluation (counted): a skip, the method's answer, or who
-// Box2D's code answers for. Always inlined into the contact's `Evaluate`: GCC 12 left it out of
-// line, and the call cost the pyramid's narrow phase 2.7 % (callgrind, 150 steps, Collide:
-// 87.4 M instructions against 85.1 M inlined, as the evaluation was before).
-[[gnu::always_inline]] inline Answer plug_in_answer(b2Manifold* manifold, const Setting& setting, const PolygonPair& p,
-                             ContactMemory& memory, const TriangleContact* contact) {
+// The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
+// `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
+// (their stamp moved, or they were forgotten) recomputes.
+inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
+                           const ContactMemory& memory, const ManifoldRecycling& recycling,
+                           const TriangleContact* contact, float margin) {
+  if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
+  if (!recycling.keeps(b_in_a, p.b.m_centroid, recycle_lever(memory.radius_sum, margin),
+                       setting.epoch)) {
+    return false;
+  }
+  return !setting.internal_edges || !contact ||
+         memory.internal_edges_stamp == contact->internal_edges_stamp(setting.epoch);
+}
+
+// How far a manifold the method just computed may move before a recompute: the setting's
+// distance for one with points; for an empty one, also no farther than its judged face's
+// separation beyond what a manifold reaches, so that no new contact is missed (see
+// `face_reach`).
+inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, const PolygonPair& p,
+                           const b2Transform& b_in_a, const ContactMemory& memory, float margin) {
+  const float distance = setting.config.recycle_distance;
+  if (manifold.pointCount > 0) return distance;
+  if (memory.last_face < 0) return 0;
+  return std::min(distance, face_separation(memory.last_face, p.a, p.b, b_in_a) -
+                                face_reach(margin));
+}
+
+// The installed backend's part of an evaluation (counted): a kept manifold, a skip, the method's
+// answer, or who Box2D's code answers for. `recycling`: the world's contact's (nullptr:
+// `collide_polygons`, which never keeps a manifold). Always inlined into the contact's
+// `Evaluate`: GCC 12 left it out of line, and the call cost the pyramid's narrow phase 2.7 %
+// (callgrind, 150 steps, Collide: 87.4 M instructions against 85.1 M inlined, as the evaluation
+// was before).
+[[gnu::always_inline]] inline Answer plug_in_answer(b2Manifold* manifold, const Setting& setting,
+                                                    const PolygonPair& p, ContactMemory& memory,
+                                                    const TriangleContact* contact,
+                                                    ManifoldRecycling* recycling) {
   using Shapes = ContactMemory::Shapes;
   ThreadCounters& count = counters();
   if (memory.shapes == Shapes::Unchecked) look_at_shapes(p.a, p.b, memory);
@@ -103,37 +136,64 @@ enum class Answer : std::uint8_t {
 
   const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
   const float margin = p.a.m_radius + p.b.m_radius;
+  const bool recycles = recycling && setting.recycles();
+  if (recycles) {
+    if (keeps_manifold(setting, p, b_in_a, memory, *recycling, contact, margin)) {
+      count.recycled.add();
+      if (manifold->pointCount > 0) count.manifolds.add();
+      return Answer::Plugin;
+    }
+    recycling->forget();
+  }
   const bool skip_bounds =
       setting.config.bounds_early_out && circles_apart(p.a, p.b, b_in_a, memory, reach(margin));
   if (skip_bounds || (setting.config.warm_axis && setting.method && memory.last_face >= 0 &&
                       face_separation(memory.last_face, p.a, p.b, b_in_a) > face_reach(margin))) {
     manifold->pointCount = 0;
     count.skipped[static_cast<int>(skip_bounds ? Skip::Bounds : Skip::WarmAxis)].add();
+    if (recycles && setting.never_recompute) recycling->remember(b_in_a, 1, setting.epoch);
     return Answer::Plugin;
   }
   // `Backend::Box2D` has no method: Box2D's own code is its answer, not a fallback. A method
   // that cannot answer falls back so that the world goes on, and is counted.
-  if (!setting.method) return Answer::Box2DTriangles;
+  if (!setting.method) return Answer::Box2DBackend;
   if (memory.shapes == Shapes::Triangles &&
       run_method(manifold, setting, p, b_in_a, memory, contact)) {
     if (manifold->pointCount > 0) count.manifolds.add();
+    if (recycles) {
+      const float slack = setting.never_recompute
+                              ? 1.0f
+                              : recycle_slack(setting, *manifold, p, b_in_a, memory, margin);
+      recycling->remember(b_in_a, slack, setting.epoch);
+    }
     return Answer::Plugin;
   }
   count.fallbacks.add();
-  return Answer::Box2DTriangles;
+  return Answer::Box2DFallback;
 }
 
 // The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
 // uncounted, exactly as Box2D's own contact); `memory` is the pair's state, updated; `contact`
-// the world's contact it belongs to, if any.
+// the world's contact it belongs to, if any, and `recycling` its kept manifold's pose (both
+// nullptr for `collide_polygons`).
 inline void evaluate(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
-                     ContactMemory& memory, const TriangleContact* contact = nullptr) {
+                     ContactMemory& memory, const TriangleContact* contact = nullptr,
+                     ManifoldRecycling* recycling = nullptr) {
   const Answer answer = setting.backend
-                            ? plug_in_answer(manifold, setting, pair, memory, contact)
+                            ? plug_in_answer(manifold, setting, pair, memory, contact, recycling)
                             : Answer::Box2DOther;
   if (answer == Answer::Plugin) return;
   b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
-  if (answer == Answer::Box2DTriangles && manifold->pointCount > 0) counters().manifolds.add();
+  if (answer == Answer::Box2DOther) return;
+  if (manifold->pointCount > 0) counters().manifolds.add();
+  // Box2D's code as the backend is kept like a method's answer (a manifold with points only:
+  // it judges no face that could bound an empty one's slack).
+  if (answer == Answer::Box2DBackend && recycling && setting.recycles()) {
+    const float slack = setting.never_recompute ? 1.0f
+                        : manifold->pointCount > 0 ? setting.config.recycle_distance
+                                                   : 0.0f;
+    recycling->remember(b2MulT(pair.xf_a, pair.xf_b), slack, setting.epoch);
+  }
 }
 
 }  // namespace dyop::box2d::detail

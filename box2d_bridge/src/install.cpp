@@ -1,3 +1,4 @@
+#include "dyop/box2d_measurement.hpp"
 #include "installation.hpp"
 #include "triangle_contact.hpp"
 
@@ -8,6 +9,32 @@ namespace {
 constexpr InstallResult kNotABackend = {
     InstallStatus::UnsupportedMethod,
     "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
+
+// Installs `backend` with `config`; `never_recompute`: the measurement floor.
+InstallResult install_setting(Backend backend, const Config& config, bool never_recompute) {
+  if (static_cast<int>(backend) >= backend_count) return kNotABackend;
+  detail::Installation& now = detail::installation();
+  if (now.setting.backend == backend && now.setting.config == config &&
+      now.setting.never_recompute == never_recompute) {
+    return {InstallStatus::Done, "already installed"};
+  }
+  if (!now.saved) {
+    now.box2d_own = detail::polygon_contact_fcns();
+    now.saved = true;
+  }
+  // Contacts already made, ours and Box2D's own, stay valid under any registration: see
+  // TriangleContact::destroy. Ours read the setting at every evaluation, so they switch at the
+  // next step, and take their internal-edge masks again (and drop any kept manifold) under the
+  // new epoch.
+  detail::register_polygon_contact({&detail::TriangleContact::create,
+                                    &detail::TriangleContact::destroy});
+  const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
+  now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
+  now.setting.never_recompute = never_recompute;
+  reset_stats();
+  return {InstallStatus::Done, never_recompute ? "installed (never recomputing: measurement only)"
+                                               : "installed"};
+}
 
 }  // namespace
 
@@ -24,24 +51,11 @@ InstallResult install(Method method, const Config& config) {
 }
 
 InstallResult install(Backend backend, const Config& config) {
-  if (static_cast<int>(backend) >= backend_count) return kNotABackend;
-  detail::Installation& now = detail::installation();
-  if (now.setting.backend == backend && now.setting.config == config) {
-    return {InstallStatus::Done, "already installed"};
-  }
-  if (!now.saved) {
-    now.box2d_own = detail::polygon_contact_fcns();
-    now.saved = true;
-  }
-  // Contacts already made, ours and Box2D's own, stay valid under any registration: see
-  // TriangleContact::destroy. Ours read the setting at every evaluation, so they switch at the
-  // next step, and take their internal-edge masks again under the new epoch.
-  detail::register_polygon_contact({&detail::TriangleContact::create,
-                                    &detail::TriangleContact::destroy});
-  const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
-  now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
-  reset_stats();
-  return {InstallStatus::Done, "installed"};
+  return install_setting(backend, config, false);
+}
+
+InstallResult measurement::install_never_recompute(Backend backend, const Config& config) {
+  return install_setting(backend, config, true);
 }
 
 InstallResult uninstall() {
@@ -49,11 +63,14 @@ InstallResult uninstall() {
   if (!now.setting.backend) {
     return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
   }
-  detail::register_polygon_contact(now.box2d_own);
+  // Box2D's own create function; our destroy function stays, as it frees every polygon contact
+  // as what it is (ours are not in the class Box2D's own destroy function frees).
+  detail::register_polygon_contact({now.box2d_own.create, &detail::TriangleContact::destroy});
   // The config and the epoch stay: `installed_config()` is the last install's.
   now.setting.backend.reset();
   now.setting.method.reset();
   now.setting.internal_edges = false;
+  now.setting.never_recompute = false;
   return {InstallStatus::Done, "uninstalled: Box2D's own contact is registered again"};
 }
 

@@ -27,6 +27,9 @@ struct Setting {
   // Which install this is, counted modulo 255 and never 0: a contact's masks found under another
   // install are found again (fixtures may have changed while the plug-in was not looking).
   std::uint8_t epoch = 0;
+  // The measurement floor (`measurement::install_never_recompute`): a contact keeps its first
+  // answer for good. Never part of a backend's setting.
+  bool never_recompute = false;
 
   Setting() = default;
   Setting(Backend b, const Config& c, std::uint8_t install_epoch)
@@ -35,6 +38,10 @@ struct Setting {
         method(method_of(b)),
         internal_edges(c.internal_edges && method && info(*method).internal_edges()),
         epoch(install_epoch) {}
+
+  // True when a world's contacts may keep their manifold (`Config::recycle_distance`, or the
+  // floor).
+  bool recycles() const { return config.recycle_distance > 0 || never_recompute; }
 };
 
 struct Installation {

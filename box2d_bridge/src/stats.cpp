@@ -16,6 +16,7 @@ void add_to(Stats& to, const ThreadCounters& from) {
   to.fallbacks += from.fallbacks.get();
   for (int s = 0; s < skip_count; ++s) to.skipped[s] += from.skipped[s].get();
   to.internal_edge_pairs += from.internal_edge_pairs.get();
+  to.recycled += from.recycled.get();
 }
 
 void clear(ThreadCounters& c) {
@@ -25,6 +26,7 @@ void clear(ThreadCounters& c) {
   c.fallbacks.clear();
   for (Counter& x : c.skipped) x.clear();
   c.internal_edge_pairs.clear();
+  c.recycled.clear();
 }
 
 // The blocks of the live threads and the totals of the ended ones. Touched when a thread first

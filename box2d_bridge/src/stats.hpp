@@ -35,6 +35,7 @@ struct ThreadCounters {
   Counter fallbacks;
   std::array<Counter, skip_count> skipped;
   Counter internal_edge_pairs;
+  Counter recycled;
 
   ThreadCounters();  // registers the block (see stats.cpp)
   ~ThreadCounters();  // adds it to the ended threads' totals and unregisters it

@@ -8,6 +8,7 @@
 #include <optional>
 #include <typeinfo>
 
+#include "dyop/box2d_measurement.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
 #include "installation.hpp"
@@ -15,11 +16,11 @@
 namespace dyop::box2d::detail {
 namespace {
 
-// Box2D's own polygon contact adds nothing to b2Contact (208 bytes in Box2D 2.4.1), which its
-// block allocator serves from the 224-byte class (classes: ..., 160, 192, 224, 256, ...).
-constexpr std::size_t box2d_polygon_contact_size = sizeof(b2Contact);
-constexpr std::size_t allocator_class_below = 192;
-constexpr std::size_t allocator_class = 224;
+// Box2D's block allocator serves sizes in classes (..., 160, 192, 224, 256, 320, ...). Box2D's
+// own polygon contact adds nothing to b2Contact (208 bytes in Box2D 2.4.1): the 224-byte class.
+// Ours adds its `ContactMemory` (16 bytes) and `ManifoldRecycling` (24): the 256-byte class.
+constexpr std::size_t allocator_class_below = 224;
+constexpr std::size_t allocator_class = 256;
 
 // Calls `visit(TriangleContact&)` for the plug-in's contacts between bodies `p` and `q` until it
 // returns false, walking the shorter of the two bodies' contact lists: a ground's may be long, a
@@ -69,15 +70,13 @@ void fixtures_changed_near(const b2Contact& c) {
 
 }  // namespace
 
-// The size budget, and what makes any registration safe for any live contact: Box2D's own
-// destroy function frees a contact with sizeof(b2PolygonContact), which the block allocator maps
-// to the same class as ours, after calling the (virtual) destructor of what the contact is.
-static_assert(box2d_polygon_contact_size > allocator_class_below &&
-                  box2d_polygon_contact_size <= allocator_class,
-              "Box2D's polygon contact is no longer in the 224-byte allocator class");
+// The size budget. Box2D's own destroy function would free a contact with
+// sizeof(b2PolygonContact), the 224-byte class: ours are never handed to it, since our destroy
+// function, which frees every polygon contact as what it is, stays registered once installed
+// (see `uninstall`).
 static_assert(sizeof(TriangleContact) > allocator_class_below &&
                   sizeof(TriangleContact) <= allocator_class,
-              "the plug-in's contact must share b2PolygonContact's allocator class (224 bytes)");
+              "the plug-in's contact must fit Box2D's 256-byte allocator class");
 
 b2Contact* TriangleContact::create(b2Fixture* fixture_a, int32, b2Fixture* fixture_b, int32,
                                    b2BlockAllocator* allocator) {
@@ -130,7 +129,38 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
   // The registry dispatches only polygon–polygon pairs here.
   const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
   const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
-  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_, this);
+  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_, this, &recycling_);
+}
+
+void TriangleContact::evaluate_afresh(b2Manifold* manifold) const {
+  const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
+  const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
+  ContactMemory memory = memory_;  // its masks and warm start, not its state
+  Setting setting = installation().setting;
+  setting.never_recompute = false;
+  evaluate(manifold, setting,
+           {a, m_fixtureA->GetBody()->GetTransform(), b, m_fixtureB->GetBody()->GetTransform()},
+           memory, this);
 }
 
 }  // namespace dyop::box2d::detail
+
+namespace dyop::box2d {
+
+void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold) {
+  manifold->pointCount = 0;
+  const b2Fixture* fa = contact.GetFixtureA();
+  const b2Fixture* fb = contact.GetFixtureB();
+  if (fa->GetType() != b2Shape::e_polygon || fb->GetType() != b2Shape::e_polygon) return;
+  auto* c = const_cast<b2Contact*>(&contact);
+  if (const detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
+    ours->evaluate_afresh(manifold);
+    return;
+  }
+  b2CollidePolygons(manifold, static_cast<const b2PolygonShape*>(fa->GetShape()),
+                    fa->GetBody()->GetTransform(),
+                    static_cast<const b2PolygonShape*>(fb->GetShape()),
+                    fb->GetBody()->GetTransform());
+}
+
+}  // namespace dyop::box2d

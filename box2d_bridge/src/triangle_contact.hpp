@@ -8,6 +8,7 @@
 #include <box2d/b2_world.h>
 
 #include "dyop/box2d.hpp"
+#include "recycling.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -50,6 +51,10 @@ class TriangleContact final : public b2Contact {
   // its fixtures touching it.
   InternalEdges find_internal_edges(std::uint16_t stamp) const;
 
+  // The manifold it would compute now with nothing kept (`measurement::evaluate_afresh`), its
+  // state unchanged.
+  void evaluate_afresh(b2Manifold* manifold) const;
+
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
   void forget_internal_edges() { memory_.internal_edges_stamp = 0; }
 
@@ -57,6 +62,7 @@ class TriangleContact final : public b2Contact {
   TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);
 
   ContactMemory memory_;
+  ManifoldRecycling recycling_;
 };
 
 }  // namespace dyop::box2d::detail

@@ -30,6 +30,8 @@ struct CompareOptions {
   std::optional<int> steps;                 ///< every scene's step count (overrides the catalogue)
   std::uint64_t seed = 0;                   ///< every scene's seed
   std::vector<std::string> scenes;          ///< a subset, in catalogue order; empty: all
+  /// The sections to run after the main table (`CompareSection::section_name`); empty: all.
+  std::vector<std::string> sections;
   /// What the Box2D scenes may skip (`--skip`): the main table's runs, and the "on" side of the
   /// skip section.
   box2d::Config skips;

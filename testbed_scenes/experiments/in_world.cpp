@@ -7,13 +7,15 @@ namespace {
 
 // The medians of one side's runs.
 InWorldSide side_of(const std::vector<scenes::SceneMetrics>& runs) {
-  std::vector<double> collide, step, step_median;
+  std::vector<double> collide, step, toi, step_median;
   for (const scenes::SceneMetrics& m : runs) {
     collide.push_back(m.narrowphase_ms_total);
     step.push_back(m.step_ms_total);
+    toi.push_back(m.solve_toi_ms_total);
     step_median.push_back(m.step_ms_median);
   }
-  return {scenes::median(collide), scenes::median(step), scenes::median(step_median), runs.front().contact_updates};
+  return {scenes::median(collide), scenes::median(step), scenes::median(toi),
+          scenes::median(step_median), runs.front().contact_updates};
 }
 
 }  // namespace
@@ -21,7 +23,8 @@ InWorldSide side_of(const std::vector<scenes::SceneMetrics>& runs) {
 int in_world_repetitions(bool quick) { return quick ? 2 : 3; }
 
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
-                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run) {
+                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run,
+                              std::vector<scenes::SceneMetrics>* plugin_runs) {
   if (repetitions < 1) throw std::invalid_argument("in-world runs need at least one repetition");
   std::vector<scenes::SceneMetrics> own, plugin;
   for (int i = 0; i < repetitions; ++i) {
@@ -35,6 +38,7 @@ InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, 
   r.repetitions = repetitions;
   r.own = side_of(own);
   r.plugin = side_of(plugin);
+  if (plugin_runs) *plugin_runs = std::move(plugin);
   return r;
 }
 

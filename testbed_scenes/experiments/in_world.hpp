@@ -27,6 +27,7 @@ namespace dyop::experiments {
 struct InWorldSide {
   double narrowphase_ms = 0;  ///< `b2Profile::collide` over steps 2..N (ms)
   double step_ms = 0;         ///< `b2World::Step` over steps 2..N (ms)
+  double solve_toi_ms = 0;    ///< `b2World::SolveTOI` over steps 2..N (ms)
   double step_ms_median = 0;  ///< scenes::median wall time of one step (ms)
   std::uint64_t contact_updates = 0;  ///< contact updates in steps 2..N (first repetition)
 };
@@ -43,16 +44,19 @@ struct InWorldRatio {
   double narrowphase_ratio() const { return plugin.narrowphase_ms / own.narrowphase_ms; }
   /// The plug-in's step time over Box2D's own.
   double step_ratio() const { return plugin.step_ms / own.step_ms; }
+  /// The plug-in's time-of-impact time over Box2D's own.
+  double solve_toi_ratio() const { return plugin.solve_toi_ms / own.solve_toi_ms; }
 };
 
 /// Runs of each side: 2 quick, 3 full.
 int in_world_repetitions(bool quick);
 
 /// Runs `run(runner)` alternately for Box2D's own contact and `backend`, `repetitions` times each
-/// (own first), and returns the medians. `run` builds, steps and measures one world (e.g. a
+/// (own first), and returns the medians (and, through `plugin_runs`, the plug-in's runs). `run` builds, steps and measures one world (e.g. a
 /// catalogue scene or a scaling size) and must give every call the same seed and steps. Throws
 /// `std::invalid_argument` for `repetitions` < 1, and what `run` throws.
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
-                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run);
+                              const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run,
+                              std::vector<scenes::SceneMetrics>* plugin_runs = nullptr);
 
 }  // namespace dyop::experiments

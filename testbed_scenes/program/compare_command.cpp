@@ -71,6 +71,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--seed", options->seed, "Seed of every scene")->capture_default_str();
   cmd->add_option("--scene", options->scenes, "Only these scenes (repeatable)")
       ->check(CLI::IsMember(names));
+  cmd->add_option("--section", options->sections,
+                  "Only these sections after the main table (repeatable; default: all)")
+      ->check(CLI::IsMember(report::compare_section_names()));
   auto skip = std::make_shared<std::string>("all");
   const std::string skip_help =
       scenes::skip_help() +

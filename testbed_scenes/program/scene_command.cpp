@@ -2,6 +2,7 @@
 // registration.
 #include "program/scene_command.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -47,6 +48,13 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
           << " rad/s, travel " << 100 * s.travel << " %\n";
     }
   }
+  if (m.manifold_errors) {
+    const ManifoldErrors& e = *m.manifold_errors;
+    out << "  manifolds the solver got: against a fresh answer (" << e.touching
+        << " touching pairs) separation off by at most " << e.kept_max << " m, " << e.stale
+        << " stale; against exact (" << e.checked << " penetrating) depth error max "
+        << e.depth_max << " m, normal error max " << e.normal_max << " m\n";
+  }
   if (m.skip_config && m.skips) {
     out << "  skips " << skip_argument(*m.skip_config) << ": of "
         << m.plugin_evaluations.value_or(0) << " evaluations, skipped";
@@ -54,6 +62,11 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
       out << (s ? ", " : " ") << box2d::name(static_cast<box2d::Skip>(s)) << ' ' << (*m.skips)[s];
     }
     out << '\n';
+    if (m.skip_config->recycle_distance > 0) {
+      out << "  recycling within " << m.skip_config->recycle_distance << " m: kept "
+          << m.recycled.value_or(0) << " manifolds of " << m.plugin_evaluations.value_or(0)
+          << " evaluations\n";
+    }
   } else {
     out << (!m.runner ? "  skips: none apply (the plug-in is not installed)\n"
                                    : "  skips: none apply (no Box2D world)\n");
@@ -74,10 +87,17 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     err << "dyop scene: paper has no Box2D world: " << box2d_own << " runs only Box2D scenes\n";
     return exit_usage_error;
   }
-  const ParsedSkips skips = parse_skips(c.skip);
+  ParsedSkips skips = parse_skips(c.skip);
   if (!skips.ok()) {
     err << "dyop scene: --skip: " << skips.error << '\n';
     return exit_usage_error;
+  }
+  if (c.recycle) {
+    if (!(*c.recycle >= 0 && std::isfinite(*c.recycle))) {
+      err << "dyop scene: --recycle takes a distance in metres, at least 0\n";
+      return exit_usage_error;
+    }
+    skips.config.recycle_distance = *c.recycle;
   }
   if (c.json == "-" && c.svg == "-") {
     err << "dyop scene: --json and --svg cannot both go to standard output\n";
@@ -112,6 +132,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     const std::unique_ptr<Scene> scene =
         c.falling ? make_rain(*c.falling, *runner, c.seed, skips.config)
                   : make_scene(c.scene, *runner, c.seed, skips.config);
+    if (c.check_manifolds) scene->check_manifolds();
     for (int i = c.steps.value_or(info->default_steps); i > 0; --i) scene->step();
     if (!c.svg.empty()) final_state = scene->drawing();
     m = scene->metrics();
@@ -161,13 +182,24 @@ void add_scene_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
                              "all|none|LIST"));
+  auto recycle = std::make_shared<float>(0.0f);
+  CLI::Option* recycle_option = cmd->add_option(
+      "--recycle", *recycle,
+      "Keep a contact's manifold while its pair moved less than this (metres; 0: off; default: "
+      "the plug-in's default, " +
+          std::to_string(box2d::Config{}.recycle_distance) + ")");
+  cmd->add_flag("--check-manifolds", args->check_manifolds,
+                "Check every manifold the solver gets against the exact answer (slows the narrow "
+                "phase: for accuracy, not timing)");
   cmd->add_option("--json", args->json, "Write the figures as one JSON object to FILE, or '-'");
   cmd->add_option("--svg", args->svg, "Draw the final state as SVG to FILE, or '-'");
   CLI::Option* falling_option = cmd->add_option(
       "--falling", *falling,
       "rain and rain-tall only: this many falling triangles (the rain scaling's sizes)");
-  cmd->callback([args, steps, steps_option, falling, falling_option, &exit_code] {
+  cmd->callback([args, steps, steps_option, falling, falling_option, recycle, recycle_option,
+                 &exit_code] {
     if (steps_option->count() > 0) args->steps = *steps;
+    if (recycle_option->count() > 0) args->recycle = *recycle;
     if (falling_option->count() > 0) args->falling = *falling;
     exit_code = run_scene_command(*args, std::cout, std::cerr);
   });

@@ -25,6 +25,12 @@ struct SceneCommand {
   std::optional<int> falling;
   std::uint64_t seed = 0;
   std::string skip = "all";  ///< a `parse_skips` argument; the `paper` scene ignores it
+  /// `box2d::Config::recycle_distance` (metres, ≥ 0; 0: off); none: the default config's. The
+  /// `paper` scene ignores it.
+  std::optional<float> recycle;
+  /// Check every manifold the solver gets against the exact answer (`Scene::check_manifolds`;
+  /// slows the narrow phase).
+  bool check_manifolds = false;
   std::string json;          ///< empty: none; "-": `out`
   std::string svg;           ///< empty: none; "-": `out`
 };

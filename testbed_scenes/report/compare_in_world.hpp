@@ -15,6 +15,7 @@ namespace dyop::report {
 
 class InWorldSection : public CompareSection {
  public:
+  const char* section_name() const override { return "in-world"; }
   void run(const SectionContext& context) override;
   bool measured() const override { return !rows_.empty(); }
   void write_tables(std::ostream& out) const override;

@@ -19,6 +19,7 @@ const char* const kTerminal = "svg size 1000,520 dynamic font 'sans,11' backgrou
 
 class PaperSection : public CompareSection {
  public:
+  const char* section_name() const override { return "paper"; }
   void run(const SectionContext& c) override {
     for (const SceneInfo* s : c.scenes) {
       if (std::string(s->name) != "paper") continue;

@@ -49,6 +49,8 @@ class Charts {
 class CompareSection {
  public:
   virtual ~CompareSection() = default;
+  /// Its `--section` name, e.g. "in-world".
+  virtual const char* section_name() const = 0;
   /// Runs the section's measurements for the scenes selected, after the main table.
   virtual void run(const SectionContext& context) = 0;
   /// True when it measured something: only then is anything of it written.
@@ -85,7 +87,11 @@ struct Comparison {
   }
 };
 
-/// Runs the main table, then every section; progress lines on `progress`. Throws what the scenes
+/// The `--section` names of every section, in order.
+std::vector<std::string> compare_section_names();
+
+/// Runs the main table, then every section (those of `options.sections`, when given); progress
+/// lines on `progress`. Throws what the scenes
 /// throw (a refused installation).
 Comparison run_comparison(const experiments::CompareOptions& options, std::ostream& progress);
 

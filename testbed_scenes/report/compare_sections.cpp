@@ -13,6 +13,7 @@ std::unique_ptr<CompareSection> make_slide_section();
 std::unique_ptr<CompareSection> make_skip_section();
 std::unique_ptr<CompareSection> make_paper_section();
 std::unique_ptr<CompareSection> make_thread_section();
+std::unique_ptr<CompareSection> make_recycling_section();
 std::unique_ptr<CompareSection> make_viewer_section();
 
 std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
@@ -22,8 +23,15 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   sections.push_back(make_skip_section());
   sections.push_back(make_paper_section());
   sections.push_back(make_thread_section());
+  sections.push_back(make_recycling_section());
   sections.push_back(make_viewer_section());
   return sections;
+}
+
+std::vector<std::string> compare_section_names() {
+  std::vector<std::string> names;
+  for (const auto& s : make_compare_sections()) names.emplace_back(s->section_name());
+  return names;
 }
 
 bool SectionContext::selected(const std::string& name) const {
@@ -54,7 +62,12 @@ Comparison run_comparison(const experiments::CompareOptions& options, std::ostre
   const std::vector<const scenes::SceneInfo*> scenes = experiments::selected_scenes(options);
   const SectionContext context{options, scenes, progress, elapsed};
   c.sections = make_compare_sections();
-  for (const auto& s : c.sections) s->run(context);
+  const std::vector<std::string>& only = options.sections;
+  for (const auto& s : c.sections) {
+    if (only.empty() || std::find(only.begin(), only.end(), s->section_name()) != only.end()) {
+      s->run(context);
+    }
+  }
   c.seconds = elapsed();
   return c;
 }

@@ -35,6 +35,7 @@ std::uint64_t skipped(const SceneMetrics& m, box2d::Skip why) {
 
 class SkipSection : public CompareSection {
  public:
+  const char* section_name() const override { return "skips"; }
   void run(const SectionContext& c) override {
     using experiments::detail::fixed;
     quick_ = c.options.quick;

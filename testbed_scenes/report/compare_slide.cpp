@@ -19,6 +19,7 @@ std::string percent(double fraction) { return fmt("%.1f", 100 * fraction) + " %"
 
 class SlideSection : public CompareSection {
  public:
+  const char* section_name() const override { return "slide"; }
   void run(const SectionContext& c) override {
     using experiments::detail::fixed;
     internal_edges_ = c.options.skips.internal_edges;

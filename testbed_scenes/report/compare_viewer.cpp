@@ -27,6 +27,8 @@ std::string page_file(const std::string& scene) { return "view_" + scene + ".htm
 
 class ViewerSection : public CompareSection {
  public:
+  const char* section_name() const override { return "viewer"; }
+
   void run(const SectionContext& c) override {
     out_dir_ = c.options.out_dir;
     for (const scenes::SceneInfo* s : c.scenes) {

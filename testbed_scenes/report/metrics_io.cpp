@@ -34,6 +34,18 @@ Json skip_config(const std::optional<box2d::Config>& config) {
   return names;
 }
 
+Json manifold_errors(const std::optional<scenes::ManifoldErrors>& e) {
+  if (!e) return Json(nullptr);
+  Json j;
+  j["touching"] = e->touching;
+  j["kept_max"] = json_number(e->kept_max);
+  j["stale"] = e->stale;
+  j["checked"] = e->checked;
+  j["depth_max"] = json_number(e->depth_max);
+  j["normal_max"] = json_number(e->normal_max);
+  return j;
+}
+
 Json skips(const std::optional<std::array<std::uint64_t, box2d::skip_count>>& counts) {
   if (!counts) return Json(nullptr);
   Json j;
@@ -83,10 +95,14 @@ Json to_json(const SceneMetrics& m) {
   j["fallbacks"] = optional(m.fallbacks);
   j["skip_config"] = skip_config(m.skip_config);
   j["skips"] = skips(m.skips);
+  j["recycle_distance"] =
+      m.skip_config ? json_number(m.skip_config->recycle_distance) : Json(nullptr);
+  j["recycled"] = optional(m.recycled);
   j["step_ms_median"] = json_number(m.step_ms_median);
   j["step_ms_total"] = json_number(m.step_ms_total);
   j["narrowphase_ms_total"] = json_number(m.narrowphase_ms_total);
   j["narrowphase_ns_per_pair"] = json_number(m.narrowphase_ns_per_pair);
+  j["solve_toi_ms_total"] = json_number(m.solve_toi_ms_total);
   j["max_penetration"] = json_number(m.max_penetration);
   j["mean_penetration"] = json_number(m.mean_penetration);
   j["pd_error_max"] = json_number(m.pd_error_max);
@@ -96,6 +112,7 @@ Json to_json(const SceneMetrics& m) {
   j["kinetic_energy_final"] = json_number(m.kinetic_energy_final);
   j["top_displacement"] = optional(m.top_displacement);
   j["slide"] = slide(m.slide);
+  j["manifold_errors"] = manifold_errors(m.manifold_errors);
   j["nan_detected"] = m.nan_detected || !all_finite(m);  // a null above means a NaN
   j["hash"] = hash_hex(m.hash);
   return j;
@@ -107,6 +124,8 @@ const Json& full_record() {
     SceneMetrics m;
     m.skip_config.emplace();
     m.skips.emplace();
+    m.recycled.emplace();
+    m.manifold_errors.emplace();
     m.slide.emplace();
     m.slide->sliders.emplace_back();
     return to_json(m);

@@ -8,6 +8,7 @@
 
 #include "dyop/sat.hpp"
 #include "adapters/pair_function.hpp"
+#include "scenes/exact_pair.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 
@@ -119,28 +120,7 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
 void ContactProbe::measure_penetration(const b2World& world, PenetrationTally& depths) {
   for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
     if (!c->IsTouching()) continue;
-    const b2Fixture* fa = c->GetFixtureA();
-    const b2Fixture* fb = c->GetFixtureB();
-    if (!is_triangle(fa) || !is_triangle(fb)) continue;
-    // B's vertices in A's body frame, in double from the float transforms.
-    const b2Transform& xa = fa->GetBody()->GetTransform();
-    const b2Transform& xb = fb->GetBody()->GetTransform();
-    const double ca = xa.q.c, sa = xa.q.s, cb = xb.q.c, sb = xb.q.s;
-    const double dx = double(xb.p.x) - double(xa.p.x), dy = double(xb.p.y) - double(xa.p.y);
-    const double c_rel = ca * cb + sa * sb, s_rel = ca * sb - sa * cb;
-    const Vec2<double> t(ca * dx + sa * dy, -sa * dx + ca * dy);
-    const b2PolygonShape& a = polygon(fa);
-    const b2PolygonShape& b = polygon(fb);
-    Vec2<double> va[3], vb[3];
-    for (int i = 0; i < 3; ++i) {
-      va[i] = Vec2<double>(a.m_vertices[i].x, a.m_vertices[i].y);
-      const double x = b.m_vertices[i].x, y = b.m_vertices[i].y;
-      vb[i] = Vec2<double>(c_rel * x - s_rel * y, s_rel * x + c_rel * y) + t;
-    }
-    const TriangleOrError<double> ta = Triangle<double>::make(va[0], va[1], va[2]);
-    const TriangleOrError<double> tb = Triangle<double>::make(vb[0], vb[1], vb[2]);
-    if (!ta.ok() || !tb.ok()) continue;
-    depths.add(sat(ta.triangle, tb.triangle).depth);
+    if (const std::optional<ExactPair> pair = exact_pair(*c)) depths.add(sat(pair->a, pair->b).depth);
   }
 }
 

@@ -50,6 +50,18 @@ struct SlideFigures {
 /// `sliders` with their sliding ones' largest speeds and smallest travel.
 SlideFigures summarize_sliders(std::vector<SliderFigures> sliders);
 
+/// The largest errors of the manifolds a world's solver got, against the exact answer for the
+/// same pose (`ManifoldCheck`, which says how each is measured).
+struct ManifoldErrors {
+  std::uint64_t touching = 0;  ///< touching triangle pairs checked
+  /// Largest |deepest separation − the fresh manifold's| over them (m): what keeping costs.
+  double kept_max = 0;
+  std::uint64_t stale = 0;    ///< of them, with points where the fresh manifold has none
+  std::uint64_t checked = 0;  ///< of them, pairs whose cores penetrate exactly
+  double depth_max = 0;       ///< largest |deepest separation − exact separation| over those (m)
+  double normal_max = 0;      ///< largest overlap along the normal − exact depth over those (m)
+};
+
 /// The figures of one scene run under one runner.
 struct SceneMetrics {
   std::string scene;  ///< scene name
@@ -80,6 +92,10 @@ struct SceneMetrics {
   /// (index: `static_cast<int>(box2d::Skip)`), over the whole run like `plugin_evaluations`, of
   /// which they are a part (`stats().skipped`). None for `paper`.
   std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
+  /// Box2D scenes: triangle-pair evaluations that kept the contact's manifold
+  /// (`box2d::Config::recycle_distance`, in `skip_config`), over the whole run, of
+  /// `plugin_evaluations` (`stats().recycled`). None for `paper`.
+  std::optional<std::uint64_t> recycled;
   double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
   /// Wall time of all the measured steps together (ms): Box2D scenes, `b2World::Step` in steps
   /// 2..N (what a user of the world waits for); paper, the runner's calls.
@@ -88,6 +104,9 @@ struct SceneMetrics {
   /// `b2World::GetProfile().collide` (time in `b2ContactManager::Collide`, contact updates);
   /// paper, the time of the runner's calls.
   double narrowphase_ms_total = 0;
+  /// Box2D scenes: time in `b2World::SolveTOI` over the same steps (ms, the sum of
+  /// `GetProfile().solveTOI`: the time-of-impact pass); 0 for `paper`.
+  double solve_toi_ms_total = 0;
   /// `narrowphase_ms_total` per contact update (ns). Box2D scenes: includes Box2D's own per-contact
   /// work around the call (the broad-phase overlap test, manifold bookkeeping, warm-start match).
   double narrowphase_ns_per_pair = 0;
@@ -110,6 +129,8 @@ struct SceneMetrics {
   std::optional<double> top_displacement;
   /// Scene `slide`: its sliders' figures. None for the other scenes.
   std::optional<SlideFigures> slide;
+  /// Box2D scenes run with `Scene::check_manifolds`: the manifolds' errors. None otherwise.
+  std::optional<ManifoldErrors> manifold_errors;
   bool nan_detected = false;  ///< a non-finite body state or figure appeared
   std::uint64_t hash = 0;     ///< FNV-1a of the final body states: equal seeds, equal hashes
 };

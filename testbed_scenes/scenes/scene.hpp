@@ -36,6 +36,10 @@ class Scene {
   virtual SceneMetrics metrics() const = 0;
   /// The current state, to draw.
   virtual Drawing drawing() const = 0;
+  /// From now on, checks every manifold the solver gets against the exact answer
+  /// (`SceneMetrics::manifold_errors`). Box2D scenes; the paper scene has no manifolds and ignores
+  /// it. Slows the narrow phase: for accuracy runs, never for timing.
+  virtual void check_manifolds() {}
 };
 
 /// A scene of the catalogue.

@@ -24,9 +24,9 @@ struct SkipSwitch {
 /// Number of switches: the fields of `box2d::Config`.
 inline constexpr int skip_switch_count = 3;
 
-// A skip added to `box2d::Config` needs its switch below (`internal_edges`, the one more field,
-// is not a skip: it changes the answer).
-static_assert(sizeof(box2d::Config) == (skip_switch_count + 1) * sizeof(bool),
+// A skip added to `box2d::Config` needs its switch below (`internal_edges` and
+// `recycle_distance`, the two more fields, are not skips: they change the answer).
+static_assert(sizeof(box2d::Config) == sizeof(float) + (skip_switch_count + 1) * sizeof(bool),
               "every box2d::Config skip has a --skip switch");
 
 /// Every switch, in `box2d::Config`'s field order.

@@ -40,6 +40,12 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
 
 WorldScene::~WorldScene() { world_.reset(); }
 
+void WorldScene::check_manifolds() {
+  if (manifold_check_) return;
+  manifold_check_ = std::make_unique<ManifoldCheck>();
+  world_->get().SetContactListener(manifold_check_.get());
+}
+
 void WorldScene::step() {
   const bool measured = steps_ > 0;  // step 1's contacts are created inside Step
   const ContactProbe::Updates u = probe_->before_step(world_->get(), errors_);
@@ -52,6 +58,7 @@ void WorldScene::step() {
   if (measured) {
     step_ms_measured_ += step_ms_.back();
     collide_ms_ += world_->get().GetProfile().collide;
+    solve_toi_ms_ += world_->get().GetProfile().solveTOI;
     updates_.contacts += u.contacts;
     updates_.triangles += u.triangles;
   }
@@ -104,14 +111,17 @@ SceneMetrics WorldScene::metrics() const {
     m.fallbacks = s.fallbacks;
     m.skip_config = skips_;
     m.skips = s.skipped;
+    m.recycled = s.recycled;
   }
   m.step_ms_median = median(step_ms_);
   m.step_ms_total = step_ms_measured_;
   m.narrowphase_ms_total = collide_ms_;
+  m.solve_toi_ms_total = solve_toi_ms_;
   m.narrowphase_ns_per_pair =
       updates_.contacts > 0 ? collide_ms_ * 1e6 / static_cast<double>(updates_.contacts) : 0;
   add_accuracy(errors_, penetration_, m);
   if (!watched_start_.empty()) m.top_displacement = top_displacement_;
+  if (manifold_check_) m.manifold_errors = manifold_check_->errors();
   if (!build_.sliders.empty()) {
     std::vector<SliderFigures> sliders;
     const double seconds = steps_ * double(time_step);

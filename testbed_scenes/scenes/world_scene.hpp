@@ -18,6 +18,7 @@
 
 #include "scenes/contact_probe.hpp"
 #include "scenes/installation.hpp"
+#include "scenes/manifold_check.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
 #include "workloads/random.hpp"
@@ -61,6 +62,7 @@ class WorldScene : public Scene {
   void step() override;
   SceneMetrics metrics() const override;
   Drawing drawing() const override;
+  void check_manifolds() override;
 
   /// The world, for tests that look inside.
   const World& world() const { return *world_; }
@@ -78,11 +80,13 @@ class WorldScene : public Scene {
   std::vector<b2Vec2> watched_start_;
   std::vector<float> slider_start_x_;
   std::unique_ptr<ContactProbe> probe_;
+  std::unique_ptr<ManifoldCheck> manifold_check_;  // set on the world by `check_manifolds`
 
   int steps_ = 0;
   std::vector<double> step_ms_;
   double step_ms_measured_ = 0;  // steps 2..N, as `collide_ms_`
   double collide_ms_ = 0;
+  double solve_toi_ms_ = 0;  // steps 2..N
   ContactProbe::Updates updates_;
   ErrorTally errors_;
   PenetrationTally penetration_;

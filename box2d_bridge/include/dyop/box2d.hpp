@@ -187,22 +187,42 @@ struct Config {
   /// as the plug-in was without the rule.
   bool internal_edges = true;
 
+  /// Not a skip either: it may change the answer, within a bound. Metres; 0: off, and the world
+  /// is bit-identical to the plug-in without it. A world's contact keeps the manifold it computed
+  /// (Box2D hands it back at every update) while the relative pose of its two triangles has moved
+  /// less than this since it was computed: B's centroid against A plus the relative turn times a
+  /// lever of the pair's extent (`|Δc| + |sin Δθ|·1.01·(3·radius_sum + reach)`), and never across
+  /// a turn of more than about 11.5° (cosine 0.98). Sound in Box2D 2.4: manifolds are in body
+  /// frames and the solver recomputes every separation from the current transforms, and the
+  /// impulses carry over by `id.key`; what a kept manifold misses is a change of features (a
+  /// vertex coming within the skins, a point sliding off a face), by at most about this distance.
+  /// An empty manifold is kept only while the pose moved less than its judged face separates the
+  /// pair beyond the skins' reach, so no new contact is missed; a fast body recomputes every step
+  /// (it moves farther than the tolerance); another install (backend or config) and a change of
+  /// the pair's internal-edge masks recompute; a skipped evaluation is never kept. Counted in
+  /// `Stats::recycled`. `collide_polygons` never keeps a manifold (it has no contact to keep it
+  /// in).
+  float recycle_distance = 0;
+
   /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }
-  /// Every skip off: the work of every step done in full (internal edges as by default).
+  /// Every skip off and no manifold kept: the work of every step done in full (internal edges as
+  /// by default).
   static Config none() {
     Config c;
     c.bounds_early_out = false;
     c.warm_axis = false;
     c.lin_canny_cache = false;
+    c.recycle_distance = 0;
     return c;
   }
 };
 
-/// True when `x` and `y` switch the same skips and the same internal-edge rule.
+/// True when `x` and `y` switch the same skips, internal-edge rule and recycling.
 inline bool operator==(const Config& x, const Config& y) {
   return x.bounds_early_out == y.bounds_early_out && x.warm_axis == y.warm_axis &&
-         x.lin_canny_cache == y.lin_canny_cache && x.internal_edges == y.internal_edges;
+         x.lin_canny_cache == y.lin_canny_cache && x.internal_edges == y.internal_edges &&
+         x.recycle_distance == y.recycle_distance;
 }
 
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
@@ -264,10 +284,9 @@ struct ContactMemory {
 /// step, between the steps of running worlds, with several worlds alive, after a world was
 /// deleted. What holds:
 /// - Box2D makes each contact with whatever is registered at that moment, and every contact is
-///   freed as what it is: the plug-in's destroy function hands Box2D's own contacts to Box2D's
-///   own, and Box2D's own (registered again by `uninstall`) frees the plug-in's correctly, as their
-///   destructor is virtual and their size falls in the same class of Box2D's block allocator (a
-///   static assertion holds it).
+///   freed as what it is: the plug-in's destroy function, registered from the first install on
+///   (`uninstall` keeps it), frees its own contacts in their class of Box2D's block allocator and
+///   hands Box2D's own to Box2D's own destroy function.
 /// - Every contact the plug-in made follows the installed backend and skips from the next step
 ///   on; after `uninstall` it answers with `b2CollidePolygons`, exactly as Box2D's own contact.
 /// - Contacts Box2D's own code made before the install keep Box2D's answer until they end (when
@@ -280,10 +299,12 @@ InstallResult install(Backend backend, const Config& config = Config::all());
 /// does not offer (`DyopPaper`, `Batch`).
 InstallResult install(Method method, const Config& config = Config::all());
 
-/// Registers again what was registered for polygon pairs before the plug-in was installed
-/// (Box2D's own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made
-/// after it is bit-identical to one that never saw the plug-in. Never refused, safe at any moment
-/// `install` is; does nothing when not installed.
+/// Registers again what made polygon pairs' contacts before the plug-in was installed (Box2D's
+/// own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made after it is
+/// bit-identical to one that never saw the plug-in. The plug-in's destroy function stays
+/// registered: the plug-in's contacts still alive are larger than Box2D's own (another class of
+/// Box2D's block allocator), and it frees Box2D's own through Box2D's own function. Never refused,
+/// safe at any moment `install` is; does nothing when not installed.
 InstallResult uninstall();
 
 /// The installed backend, or nothing when Box2D's own contact is registered.
@@ -320,6 +341,9 @@ struct Stats {
   /// Triangle-pair evaluations run by an exact backend with internal edges or closed vertices in
   /// force (`Config::internal_edges`): the pairs whose contact the rule may change.
   std::uint64_t internal_edge_pairs = 0;
+  /// Triangle-pair evaluations that kept the contact's manifold (`Config::recycle_distance`);
+  /// included in `triangle_pairs`.
+  std::uint64_t recycled = 0;
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }
   /// Evaluations skipped for reason `s`.

@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// Measurement only: what the plug-in's narrow phase could cost at the least inside Box2D 2.4.
+/// Not a backend, never offered as one (`parse_backend` does not know it): a world stepped under
+/// it is physically wrong.
+
+#include "dyop/box2d.hpp"
+
+class b2Contact;
+
+namespace dyop::box2d::measurement {
+
+/// Installs `backend` with `config` as `install` does, except that every contact made from now on
+/// keeps its first answer for good (a manifold with points, an empty one, a skip): its `Evaluate`
+/// returns at once after that. What is left of a step's narrow phase is Box2D's own walk of its
+/// contact list, the fat-AABB tests and `b2Contact::Update`'s bookkeeping: the floor any narrow
+/// phase plugged into Box2D 2.4 pays. Bodies fall through each other once their first answers are
+/// stale; measure the narrow phase of a few hundred steps, not what the world does. `installed()`
+/// reports `backend`; `install` or `uninstall` ends it. Same threading rules as `install`.
+InstallResult install_never_recompute(Backend backend, const Config& config = Config::all());
+
+/// The manifold `contact` (a polygon pair's contact of a world) would get now if it kept nothing:
+/// the plug-in's contact evaluated afresh at its bodies' current transforms with the installed
+/// setting and its own internal-edge masks (`Config::recycle_distance` ignored), without changing
+/// the contact; a contact Box2D's own code made, or any contact while uninstalled,
+/// `b2CollidePolygons`. Counted in `stats` like any evaluation. What a kept manifold is measured
+/// against. For a contact of another shape pair, `manifold` gets no points.
+void evaluate_afresh(const b2Contact& contact, b2Manifold* manifold);
+
+}  // namespace dyop::box2d::measurement

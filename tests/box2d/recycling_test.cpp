@@ -1,0 +1,158 @@
+// Manifold recycling (`Config::recycle_distance`): keeping a contact's manifold while its pair
+// barely moved must not change what the world does beyond the header's bound: structures stand,
+// fast bodies are stopped, a change of masks or install recomputes, the kept manifolds stay within
+// the bound of a fresh answer, and the measurement floor keeps everything.
+#include <vector>
+
+#include "dyop/box2d_measurement.hpp"
+#include "scene.hpp"
+#include "scenes/scene.hpp"
+
+namespace dyop::box2d::testing {
+namespace {
+
+constexpr std::uint64_t kSeed = 7;
+
+Config recycling(float distance) {
+  Config c = Config::all();
+  c.recycle_distance = distance;
+  return c;
+}
+
+// A structure "stands as without recycling" when its top drifts no more than 1 cm beyond what it
+// drifts with recycling off (the drift itself is settling: centimetres; a fall is metres).
+constexpr double kExtraDrift = 0.01;
+
+TEST(Recycling, PyramidAndStackStandAsWithoutIt) {
+  for (const char* scene : {"pyramid", "stack"}) {
+    const scenes::SceneMetrics off =
+        scenes::run_scene(scene, Backend::Dyop, 600, kSeed, recycling(0));
+    ASSERT_TRUE(off.top_displacement.has_value());
+    for (const float d : {0.005f, 0.02f, 0.05f}) {
+      const scenes::SceneMetrics on =
+          scenes::run_scene(scene, Backend::Dyop, 600, kSeed, recycling(d));
+      ASSERT_TRUE(on.top_displacement.has_value());
+      EXPECT_FALSE(on.nan_detected);
+      EXPECT_GT(on.recycled.value_or(0), 0u) << scene << " at " << d << " m kept nothing";
+      EXPECT_LE(*on.top_displacement, *off.top_displacement + kExtraDrift)
+          << scene << " at " << d << " m";
+    }
+  }
+}
+
+// The header's promise: a kept manifold's deepest separation is within about the distance of
+// the fresh answer's. Bound checked: twice the distance plus the face hysteresis (the kept face
+// and the fresh best face each moved by less than the distance, and the fresh choice may prefer
+// A's face within the hysteresis).
+TEST(Recycling, KeptManifoldsStayWithinTheBoundOfAFreshAnswer) {
+  for (const float d : {0.005f, 0.02f}) {
+    const std::unique_ptr<scenes::Scene> rain =
+        scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(d));
+    rain->check_manifolds();
+    for (int i = 0; i < 300; ++i) rain->step();
+    const scenes::SceneMetrics m = rain->metrics();
+    ASSERT_TRUE(m.manifold_errors.has_value());
+    EXPECT_GT(m.recycled.value_or(0), 0u);
+    EXPECT_GT(m.manifold_errors->touching, 1000u);
+    EXPECT_LE(m.manifold_errors->kept_max, 2 * d + face_hysteresis) << d << " m";
+  }
+}
+
+TEST(Recycling, OffKeepsNothingAndTheFreshAnswerIsTheWorldsOwn) {
+  const std::unique_ptr<scenes::Scene> rain =
+      scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(0));
+  rain->check_manifolds();
+  for (int i = 0; i < 200; ++i) rain->step();
+  const scenes::SceneMetrics m = rain->metrics();
+  EXPECT_EQ(m.recycled.value_or(1), 0u);
+  ASSERT_TRUE(m.manifold_errors.has_value());
+  EXPECT_EQ(m.manifold_errors->kept_max, 0.0);
+  EXPECT_EQ(m.manifold_errors->stale, 0u);
+}
+
+// 100 m/s at a 6 cm wall (see bullet_test.cpp): every step moves the body metres, far beyond any
+// distance, so no evaluation of its contact with the wall is kept.
+TEST(Recycling, FastBodyIsNeverKeptThroughAThinWall) {
+  ASSERT_TRUE(install(Backend::Dyop, recycling(0.05f)).ok());
+  for (const bool bullet : {false, true}) {
+    World world(b2Vec2(0.0f, 0.0f));
+    b2Body* wall = add_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+    add_triangle(wall, b2Vec2(0.0f, -2.0f), b2Vec2(0.06f, 0.0f), b2Vec2(0.0f, 2.0f));
+    b2Body* shot = add_body(world, b2_dynamicBody, b2Vec2(-5.0f, 0.0f));
+    shot->SetBullet(bullet);
+    const b2Fixture* f =
+        add_triangle(shot, b2Vec2(-0.05f, -0.04f), b2Vec2(0.05f, 0.0f), b2Vec2(-0.05f, 0.04f));
+    shot->SetLinearVelocity(b2Vec2(100.0f, 0.0f));
+    const auto* shape = static_cast<const b2PolygonShape*>(f->GetShape());
+    float reach = -5.0f;
+    for (int i = 0; i < kStepsPerSecond; ++i) {
+      world.step();
+      for (int k = 0; k < 3; ++k) {
+        reach = std::max(reach, shot->GetWorldPoint(shape->m_vertices[k]).x);
+      }
+    }
+    EXPECT_LT(reach, 0.0f) << (bullet ? "bullet" : "non-bullet");
+  }
+  uninstall();
+}
+
+// A box resting awake on a one-triangle ground: once settled, every evaluation is kept.
+struct RestingBox {
+  World world;
+  b2Body* ground;
+  b2Body* box;
+  RestingBox() {
+    ground = add_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+    add_triangle(ground, b2Vec2(-4.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(-4.0f, -1.0f));
+    box = scenes::add_split_box(world, b2Vec2(0.0f, 0.5f + b2_polygonRadius), 0.5f);
+    box->SetSleepingAllowed(false);
+    for (int i = 0; i < 2 * kStepsPerSecond; ++i) world.step();
+  }
+  // Evaluations kept in one step.
+  std::uint64_t kept_in_one_step() {
+    const std::uint64_t before = stats().recycled;
+    world.step();
+    return stats().recycled - before;
+  }
+};
+
+TEST(Recycling, RestingContactsAreKeptAndAnotherInstallRecomputes) {
+  ASSERT_TRUE(install(Backend::Dyop, recycling(0.01f)).ok());
+  RestingBox r;
+  EXPECT_EQ(r.kept_in_one_step(), 2u) << "both of the box's triangles rest on the ground";
+  Config other = recycling(0.01f);
+  other.warm_axis = false;
+  ASSERT_TRUE(install(Backend::Dyop, other).ok());
+  EXPECT_EQ(r.kept_in_one_step(), 0u) << "the first step under another install";
+  EXPECT_EQ(r.kept_in_one_step(), 2u);
+  uninstall();
+}
+
+TEST(Recycling, AContactWhoseMasksMayChangeRecomputes) {
+  ASSERT_TRUE(install(Backend::Dyop, recycling(0.01f)).ok());
+  RestingBox r;
+  ASSERT_EQ(r.kept_in_one_step(), 2u);
+  // A triangle added under the box, sharing the ground's top edge's end: the ground triangle's
+  // masks may change, so the box's contacts with the ground recompute.
+  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  EXPECT_EQ(r.kept_in_one_step(), 0u);
+  EXPECT_EQ(r.kept_in_one_step(), 2u);
+  uninstall();
+}
+
+TEST(Recycling, TheFloorKeepsEveryAnswerAfterTheFirst) {
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  RestingBox r;
+  ASSERT_TRUE(measurement::install_never_recompute(Backend::Dyop).ok());
+  EXPECT_EQ(r.kept_in_one_step(), 0u) << "the first answer under the floor is computed";
+  for (int i = 0; i < 10; ++i) {
+    const std::uint64_t pairs = stats().triangles(Backend::Dyop);
+    const std::uint64_t kept = r.kept_in_one_step();
+    EXPECT_EQ(kept, stats().triangles(Backend::Dyop) - pairs);
+  }
+  EXPECT_EQ(install(Backend::Dyop).message, std::string("installed")) << "install ends the floor";
+  uninstall();
+}
+
+}  // namespace
+}  // namespace dyop::box2d::testing
