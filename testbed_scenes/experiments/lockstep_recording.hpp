@@ -129,10 +129,10 @@ struct LockstepRecording {
 
 /// Records scene `name` of the catalogue for `steps` steps (≥ 1) under `runners[0]` with
 /// `configs[0]` and then `runners[1]` with `configs[1]` (the same runner twice with two configs
-/// sets skips or the internal-edge rule against each other). `paper` has no Box2D world: its triangles follow their
-/// paths and each step's overlapping pairs go to the runner's collide function directly
-/// (`box2d-own`: `b2CollidePolygons`). Throws `std::invalid_argument` for an unknown scene or
-/// `steps` < 1, `std::runtime_error` for a refused installation.
+/// sets skips, recycling or the internal-edge rule against each other). `paper` has no Box2D
+/// world: its triangles follow their paths and each step's overlapping pairs go to the runner's
+/// collide function directly (`box2d-own`: `b2CollidePolygons`). Throws `std::invalid_argument`
+/// for an unknown scene or `steps` < 1, `std::runtime_error` for a refused installation.
 LockstepRecording record_lockstep(
     std::string_view name, const std::array<scenes::Runner, 2>& runners, int steps,
     std::uint64_t seed,

@@ -3,6 +3,7 @@
 #include "program/view_command.hpp"
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -44,10 +45,16 @@ void write_summary(const experiments::LockstepRecording& r, const std::string& p
     for (const experiments::ViewContact& c : f.contacts) {
       marked += c.mark != experiments::EdgeMark::None;
     }
-    const std::string settings =
-        r.runners[k] ? " (skips " + skip_argument(r.configs[k]) + ", internal-edge rule " +
-                           (r.configs[k].internal_edges ? "on)" : "off)")
-                     : "";
+    const box2d::Config& config = r.configs[k];
+    std::string settings;  // a plug-in runner's (Box2D's own contact has none)
+    if (r.runners[k]) {
+      settings = " (skips " + skip_argument(config) + ", internal-edge rule " +
+                 (config.internal_edges ? "on" : "off");
+      if (config.recycle_distance > 0) {
+        settings += ", recycling within " + report::fmt("%g", config.recycle_distance) + " m";
+      }
+      settings += ")";
+    }
     out << "  " << (k == 0 ? "A " : "B ") << name(r.runners[k]) << settings << ": " << f.touching
         << " contacts, " << f.agreeing << " agree with " << name(r.runners[1 - k]) << ", "
         << marked << " differ from b2CollidePolygons, largest penetration "
@@ -78,8 +85,9 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
     runners[k] = *r;
   }
   if (c.skips.empty() || c.skips.size() > 2 || c.internal_edges.empty() ||
-      c.internal_edges.size() > 2) {
-    err << "dyop view: --skip and --internal-edges take one setting for both runners, or two\n";
+      c.internal_edges.size() > 2 || c.recycle.size() > 2) {
+    err << "dyop view: --skip, --internal-edges and --recycle take one setting for both "
+           "runners, or two\n";
     return exit_usage_error;
   }
   std::array<box2d::Config, 2> configs;
@@ -95,6 +103,14 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
     }
     configs[k] = skips.config;
     configs[k].internal_edges = edges == "on";
+    if (!c.recycle.empty()) {
+      const float recycle = c.recycle[std::size_t(k) % c.recycle.size()];
+      if (!(recycle >= 0 && std::isfinite(recycle))) {
+        err << "dyop view: --recycle takes a distance in metres, at least 0\n";
+        return exit_usage_error;
+      }
+      configs[k].recycle_distance = recycle;
+    }
   }
   if (c.steps && *c.steps < 1) {
     err << "dyop view: --steps must be at least 1\n";
@@ -182,6 +198,12 @@ void add_view_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->expected(1, 2)
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--recycle", args->recycle,
+                  "Keep a contact's manifold while its pair moved less than this (metres; 0: off; "
+                  "default: the plug-in's default, " +
+                      report::fmt("%g", box2d::Config{}.recycle_distance) +
+                      "); once: both runners; twice: A's, then B's")
+      ->expected(1, 2);
   cmd->add_option("--out,-o", args->out, "The page (default: reports/view/SCENE.html)");
   cmd->add_option("--json", args->json,
                   "Write the per-step counts the page shows as JSON to FILE, or '-'");

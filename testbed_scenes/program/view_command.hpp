@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// `dyop view SCENE [--runner A --runner B] [--steps N] [--seed S] [--skip all|none|LIST]...
-/// [--internal-edges on|off]... [--out FILE] [--json FILE|-]`: records a scene under two runners
+/// [--internal-edges on|off]... [--recycle D]... [--out FILE] [--json FILE|-]`: records a scene
+/// under two runners
 /// (by default Box2D's own contact and the plug-in's `dyop`; `experiments/lockstep_recording.hpp`)
 /// and writes one self-contained HTML page that plays them back side by side
 /// (`report/viewer_page.hpp`). The command line (CLI11, `add_view_command`) validates names;
@@ -25,6 +26,9 @@ struct ViewCommand {
   std::vector<std::string> skips = {"all"};
   /// `box2d::Config::internal_edges`, "on" or "off": one for both runners, or A's then B's.
   std::vector<std::string> internal_edges = {"on"};
+  /// `box2d::Config::recycle_distance` (metres, ≥ 0; 0: off): one for both runners, or A's then
+  /// B's; empty: the default config's.
+  std::vector<float> recycle;
   std::string out;   ///< the page; empty: `reports/view/SCENE.html` (directories made as needed)
   std::string json;  ///< the per-step counts (`report::viewer_summary`); empty: none; "-": `out`
 };

@@ -235,9 +235,10 @@ std::string base64(const std::string& bytes) {
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t n = std::uint32_t(std::uint8_t(bytes[i])) << 16 |
-                            (i + 1 < bytes.size() ? std::uint32_t(std::uint8_t(bytes[i + 1])) << 8 : 0) |
-                            (i + 2 < bytes.size() ? std::uint32_t(std::uint8_t(bytes[i + 2])) : 0);
+    const auto byte = [&](std::size_t at) {
+      return at < bytes.size() ? std::uint32_t(std::uint8_t(bytes[at])) : 0u;
+    };
+    const std::uint32_t n = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
     out += alphabet[n >> 18 & 63];
     out += alphabet[n >> 12 & 63];
     out += i + 1 < bytes.size() ? alphabet[n >> 6 & 63] : '=';
@@ -304,6 +305,7 @@ Json viewer_summary(const LockstepRecording& r) {
   s["runners"] = {scenes::name(r.runners[0]), scenes::name(r.runners[1])};
   s["skips"] = {scenes::skip_argument(r.configs[0]), scenes::skip_argument(r.configs[1])};
   s["internal_edges"] = {r.configs[0].internal_edges, r.configs[1].internal_edges};
+  s["recycle_distance"] = {r.configs[0].recycle_distance, r.configs[1].recycle_distance};
   s["bodies"] = r.bodies.size();
   s["fixtures"] = r.fixtures.size();
   Json frames = Json::array();

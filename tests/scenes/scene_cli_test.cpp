@@ -1,4 +1,5 @@
-// `dyop scene`, `dyop compare` and `dyop view` as a user runs them: the program itself, with its exit status.
+// `dyop scene`, `dyop compare` and `dyop view` as a user runs them: the program itself, with its
+// exit status.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -180,12 +181,13 @@ TEST(ViewCli, TakesAnyTwoRunnersAndTheRuleSwitch) {
 TEST(ViewCli, SetsTheSameBackendAgainstItselfWithTwoSettings) {
   const auto dir = temp_dir("view_settings");
   const Outcome r = run("view slide --steps 3 --runner dyop --runner dyop --internal-edges on "
-                        "--internal-edges off --skip all --skip none --out " +
+                        "--internal-edges off --skip all --skip none --recycle 0.002 --out " +
                         (dir / "s.html").string() + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["internal_edges"], nlohmann::json({true, false}));
   EXPECT_EQ(j["skips"], nlohmann::json({"all", "none"}));
+  EXPECT_NEAR(j["recycle_distance"][1].get<double>(), 0.002, 1e-9) << "once: both runners";
 }
 
 TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
@@ -195,6 +197,7 @@ TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
   EXPECT_EQ(run("view slide --steps 0").status, 1);
   EXPECT_EQ(run("view slide --internal-edges maybe").status, 1);
   EXPECT_EQ(run("view slide --skip all --skip all --skip all").status, 1);
+  EXPECT_EQ(run("view slide --recycle -1").status, 1);
   EXPECT_EQ(run("view slide --steps 2 --out - --json -").status, 1);
   const auto dir = temp_dir("view_unwritable");
   std::ofstream(dir / "file") << "x";
