@@ -1,16 +1,21 @@
 #!/usr/bin/env bash
 # Installs whatever Debian 12 packages the project needs and are missing, then configures and
 # builds the Release tree in build/: the targets named (`bash scripts/setup.sh dyop_executable`),
-# or everything. Called by main.sh (the `dyop` program only) and test.sh (everything); safe to run
-# again. The build's own output goes to build/build.log; standard error gets one progress line
-# per tenth of the build, and the log's end if the build fails. Standard output stays free for
-# the tables of the command that follows.
+# or everything. Called by main.sh (the `dyop` program only), test.sh (everything) and
+# browser_test.sh (the program, with DYOP_EXTRA_PACKAGES=chromium); safe to run again. The
+# build's own output goes to build/build.log; standard error gets one progress line per tenth of
+# the build, and the log's end if the build fails. Standard output stays free for the tables of
+# the command that follows.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
-          libcli11-dev libgmp-dev nlohmann-json3-dev gnuplot-nox
+          libcli11-dev libgmp-dev nlohmann-json3-dev zlib1g-dev gnuplot-nox
           clang libclang-rt-14-dev)  # the last two for scripts/fuzz.sh (libFuzzer)
+# More for one caller only, e.g. DYOP_EXTRA_PACKAGES=chromium (scripts/browser_test.sh): the
+# main command does not wait for them.
+read -r -a extra <<< "${DYOP_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "experiments/progress.hpp"
+#include "experiments/reference_face.hpp"
 #include "scenes/builders.hpp"
 #include "scenes/contact_probe.hpp"
 #include "scenes/scene.hpp"
@@ -37,19 +38,6 @@ void require_calls(const ContactStream& stream) {
   }
 }
 
-// The reference edge of a manifold with points: the polygon's normal nearest `localNormal`
-// (the plug-in and Box2D both copy it from `m_normals`, so the nearest is the one copied).
-int reference_edge(const b2Manifold& m, const StreamContact& c) {
-  const b2PolygonShape& ref = m.type == b2Manifold::e_faceA ? c.shape_a : c.shape_b;
-  int best = 0;
-  for (int i = 1; i < ref.m_count; ++i) {
-    if (b2Dot(ref.m_normals[i], m.localNormal) > b2Dot(ref.m_normals[best], m.localNormal)) {
-      best = i;
-    }
-  }
-  return best;
-}
-
 float deepest(const b2WorldManifold& w, int points) {
   return points == 1 ? w.separations[0] : std::min(w.separations[0], w.separations[1]);
 }
@@ -60,7 +48,8 @@ void agree(const b2Manifold& got, const b2Manifold& ref, const StreamContact& c,
   if (got.pointCount == ref.pointCount) ++out.same_point_count;
   if (got.pointCount == 0 || ref.pointCount == 0) return;
   ++out.both_points;
-  if (got.type == ref.type && reference_edge(got, c) == reference_edge(ref, c)) ++out.same_face;
+  if (got.type == ref.type && reference_edge(got, c.shape_a, c.shape_b) ==
+                                 reference_edge(ref, c.shape_a, c.shape_b)) ++out.same_face;
   b2WorldManifold wg, wr;
   wg.Initialize(&got, call.xf_a, c.shape_a.m_radius, call.xf_b, c.shape_b.m_radius);
   wr.Initialize(&ref, call.xf_a, c.shape_a.m_radius, call.xf_b, c.shape_b.m_radius);

@@ -14,5 +14,6 @@ void add_stress_command(CLI::App& app, int& exit_code);
 /// Built with Box2D only (DYOP_WITH_BOX2D).
 void add_scene_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
+void add_view_command(CLI::App& app, int& exit_code);
 
 }  // namespace dyop::cli

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
 #ifdef DYOP_WITH_BOX2D
   dyop::cli::add_scene_command(app, exit_code);
   dyop::cli::add_compare_command(app, exit_code);
+  dyop::cli::add_view_command(app, exit_code);
 #endif
   try {
     app.parse(argc, argv);

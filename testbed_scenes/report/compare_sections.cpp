@@ -14,6 +14,7 @@ std::unique_ptr<CompareSection> make_skip_section();
 std::unique_ptr<CompareSection> make_paper_section();
 std::unique_ptr<CompareSection> make_thread_section();
 std::unique_ptr<CompareSection> make_recycling_section();
+std::unique_ptr<CompareSection> make_viewer_section();
 
 std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   std::vector<std::unique_ptr<CompareSection>> sections;
@@ -23,6 +24,7 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   sections.push_back(make_paper_section());
   sections.push_back(make_thread_section());
   sections.push_back(make_recycling_section());
+  sections.push_back(make_viewer_section());
   return sections;
 }
 

@@ -23,14 +23,6 @@ Vec2<double> world_point(const b2Transform& xf, const b2Vec2& v) {
 
 }  // namespace
 
-WorldScene::Installation::Installation(const Runner& runner, const box2d::Config& skips) {
-  const box2d::InstallResult r = runner ? box2d::install(*runner, skips) : box2d::uninstall();
-  if (!r.ok()) throw std::runtime_error(std::string("cannot install the backend: ") + r.message);
-  box2d::reset_stats();
-}
-
-WorldScene::Installation::~Installation() { box2d::uninstall(); }
-
 WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t seed,
                        const box2d::Config& skips, const WorldBuilder& build)
     : name_(std::move(name)),

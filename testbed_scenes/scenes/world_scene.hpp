@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scenes/contact_probe.hpp"
+#include "scenes/installation.hpp"
 #include "scenes/manifold_check.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world.hpp"
@@ -72,15 +73,6 @@ class WorldScene : public Scene {
   const WorldBuild& build() const { return build_; }
 
  private:
-  // Uninstalls the backend when the scene goes, also when building it threw, so that the next
-  // world starts with Box2D's own contact registered.
-  struct Installation {
-    Installation(const Runner& runner, const box2d::Config& skips);
-    ~Installation();
-    Installation(const Installation&) = delete;
-    Installation& operator=(const Installation&) = delete;
-  };
-
   std::string name_;
   Runner runner_;
   std::uint64_t seed_;

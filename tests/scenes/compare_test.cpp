@@ -85,6 +85,13 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   EXPECT_NE(report.find("## Worlds on threads"), std::string::npos);
   const std::string threads = read(dir / "threads.csv");
   EXPECT_EQ(std::count(threads.begin(), threads.end(), '\n'), 3 * 2 + 1);
+  // The viewer section: one page per scene, each linked from the report.
+  EXPECT_NE(report.find("## Viewer"), std::string::npos);
+  for (const SceneInfo& s : scene_catalog()) {
+    const std::string page = "view_" + std::string(s.name) + ".html";
+    EXPECT_GT(std::filesystem::file_size(dir / page), 10000u) << page;
+    EXPECT_NE(report.find("](" + page + ")"), std::string::npos) << page;
+  }
   // Every section's files are listed in the report.
   for (const char* file : {"inworld.csv", "slide.csv", "tiles.csv", "skips.csv", "paper_methods.csv",
                            "threads.csv"}) {

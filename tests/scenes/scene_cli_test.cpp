@@ -1,4 +1,5 @@
-// `dyop scene` and `dyop compare` as a user runs them: the program itself, with its exit status.
+// `dyop scene`, `dyop compare` and `dyop view` as a user runs them: the program itself, with its
+// exit status.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -145,6 +146,64 @@ TEST(SceneCli, SvgToStandardOutput) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.rfind("<?xml", 0), 0u);
   EXPECT_NE(r.out.find("<polygon"), std::string::npos);
+}
+
+TEST(ViewCli, WritesOnePageAndTheCountsItShows) {
+  const auto dir = temp_dir("view");
+  const std::string page = (dir / "deep" / "slide.html").string();
+  const Outcome r = run("view slide --steps 5 --out " + page + " --json " +
+                        (dir / "slide.json").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("box2d-own"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("page: " + page), std::string::npos) << r.out;
+  std::ifstream html(page);
+  const std::string text(std::istreambuf_iterator<char>(html), {});
+  EXPECT_EQ(text.rfind("<!DOCTYPE html>", 0), 0u);
+  std::ifstream json(dir / "slide.json");
+  const nlohmann::json j = nlohmann::json::parse(json, nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["steps"], 5);
+  EXPECT_EQ(j["runners"], nlohmann::json({"box2d-own", "dyop"}));
+  EXPECT_EQ(j["frames"].size(), 5u);
+}
+
+TEST(ViewCli, TakesAnyTwoRunnersAndTheRuleSwitch) {
+  const auto dir = temp_dir("view_runners");
+  const Outcome r = run("view paper --steps 3 --runner sat --runner box2d-own --internal-edges "
+                        "off --out " + (dir / "p.html").string() + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["runners"], nlohmann::json({"sat", "box2d-own"}));
+  EXPECT_EQ(j["internal_edges"], nlohmann::json({false, false}));
+  EXPECT_NE(r.err.find("page: "), std::string::npos) << "the summary goes to standard error";
+}
+
+TEST(ViewCli, SetsTheSameBackendAgainstItselfWithTwoSettings) {
+  const auto dir = temp_dir("view_settings");
+  const Outcome r = run("view slide --steps 3 --runner dyop --runner dyop --internal-edges on "
+                        "--internal-edges off --skip all --skip none --recycle 0.002 --out " +
+                        (dir / "s.html").string() + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["internal_edges"], nlohmann::json({true, false}));
+  EXPECT_EQ(j["skips"], nlohmann::json({"all", "none"}));
+  EXPECT_NEAR(j["recycle_distance"][1].get<double>(), 0.002, 1e-9) << "once: both runners";
+}
+
+TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
+  EXPECT_EQ(run("view nope").status, 1);
+  EXPECT_EQ(run("view slide --runner nope --runner dyop").status, 1);
+  EXPECT_EQ(run("view slide --runner dyop").status, 1) << "two runners";
+  EXPECT_EQ(run("view slide --steps 0").status, 1);
+  EXPECT_EQ(run("view slide --internal-edges maybe").status, 1);
+  EXPECT_EQ(run("view slide --skip all --skip all --skip all").status, 1);
+  EXPECT_EQ(run("view slide --recycle -1").status, 1);
+  EXPECT_EQ(run("view slide --steps 2 --out - --json -").status, 1);
+  const auto dir = temp_dir("view_unwritable");
+  std::ofstream(dir / "file") << "x";
+  const Outcome bad = run("view slide --steps 2 --out " + (dir / "file" / "p.html").string());
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("cannot write"), std::string::npos) << bad.err;
 }
 
 }  // namespace

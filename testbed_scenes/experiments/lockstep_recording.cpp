@@ -1,0 +1,305 @@
+#include "experiments/lockstep_recording.hpp"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "experiments/reference_face.hpp"
+#include "scenes/installation.hpp"
+#include "scenes/paper.hpp"
+#include "scenes/scene.hpp"
+#include "scenes/scene_world.hpp"
+
+namespace dyop::experiments {
+namespace {
+
+using scenes::DrawShape;
+
+ViewManifold view_of(const b2Manifold& m, const b2Transform& xf_a, const b2Shape& a,
+                     const b2Transform& xf_b, const b2Shape& b) {
+  ViewManifold v;
+  v.points = m.pointCount;
+  if (v.points == 0) return v;
+  b2WorldManifold w;
+  w.Initialize(&m, xf_a, a.m_radius, xf_b, b.m_radius);
+  v.reference = m.type == b2Manifold::e_circles ? ViewManifold::Reference::Circles
+                : m.type == b2Manifold::e_faceA ? ViewManifold::Reference::FaceA
+                                                : ViewManifold::Reference::FaceB;
+  const b2Shape& ref = m.type == b2Manifold::e_faceA ? a : b;
+  if (m.type != b2Manifold::e_circles && ref.GetType() == b2Shape::e_polygon) {
+    v.reference_edge = reference_edge(m, static_cast<const b2PolygonShape&>(ref));
+  }
+  v.normal = w.normal;
+  v.local_normal = m.localNormal;
+  v.local_point = m.localPoint;
+  for (int i = 0; i < v.points; ++i) {
+    v.point[i] = {w.points[i], w.separations[i], m.points[i].id.key, m.points[i].localPoint};
+  }
+  return v;
+}
+
+double angle_between(const b2Vec2& u, const b2Vec2& v) {
+  return std::atan2(std::abs(double(b2Cross(u, v))), double(b2Dot(u, v)));
+}
+
+// The plug-in's manifold against Box2D's on the same pose.
+EdgeMark mark_of(const ViewManifold& plugin, const ViewManifold& box2d) {
+  if (box2d.points > 0 && plugin.points == 0) return EdgeMark::Removed;
+  if (box2d.points > 0 && angle_between(plugin.normal, box2d.normal) > redirect_angle) {
+    return EdgeMark::Redirected;
+  }
+  return EdgeMark::None;
+}
+
+DrawShape::Role role_of(const b2Body& b) {
+  return b.GetType() == b2_staticBody      ? DrawShape::Role::Static
+         : b.GetType() == b2_kinematicBody ? DrawShape::Role::Kinematic
+                                           : DrawShape::Role::Dynamic;
+}
+
+ViewFixture fixture_of(int body, const b2Shape& shape) {
+  ViewFixture f;
+  f.body = body;
+  f.radius = shape.m_radius;
+  switch (shape.GetType()) {
+    case b2Shape::e_polygon: {
+      const auto& p = static_cast<const b2PolygonShape&>(shape);
+      f.points.assign(p.m_vertices, p.m_vertices + p.m_count);
+      break;
+    }
+    case b2Shape::e_circle:
+      f.kind = DrawShape::Kind::Circle;
+      f.points.push_back(static_cast<const b2CircleShape&>(shape).m_p);
+      break;
+    case b2Shape::e_edge: {
+      const auto& e = static_cast<const b2EdgeShape&>(shape);
+      f.kind = DrawShape::Kind::Segment;
+      f.points = {e.m_vertex1, e.m_vertex2};
+      break;
+    }
+    default: break;  // the scenes make no chains
+  }
+  return f;
+}
+
+BodyPose pose_of(const b2Body& b) {
+  return {b.GetPosition().x, b.GetPosition().y, b.GetAngle()};
+}
+
+// A contact's frame entry: kept when touching or when the plug-in removed Box2D's points.
+void add_contact(ViewFrame& frame, ViewContact&& c) {
+  if (c.manifold.points == 0 && c.mark == EdgeMark::None) return;
+  for (int i = 0; i < c.manifold.points; ++i) {
+    frame.max_penetration =
+        std::max(frame.max_penetration, -double(c.manifold.point[i].separation));
+  }
+  frame.contacts.push_back(std::move(c));
+}
+
+// Box2D's code on the poses the step's narrow phase saw (`collide_*`), placed at the poses after
+// the step (`now_*`) as the plug-in's manifold is, and the mark it gives `v`.
+void mark_against_box2d(ViewContact& v, const b2PolygonShape& a, const b2Transform& collide_a,
+                        const b2Transform& now_a, const b2PolygonShape& b,
+                        const b2Transform& collide_b, const b2Transform& now_b) {
+  b2Manifold reference;
+  b2CollidePolygons(&reference, &a, collide_a, &b, collide_b);
+  const ViewManifold box2d = view_of(reference, now_a, a, now_b, b);
+  v.mark = mark_of(v.manifold, box2d);
+  if (v.mark != EdgeMark::None) v.box2d = box2d;
+}
+
+// The frame, its contacts sorted, after the others.
+void add_frame(std::vector<ViewFrame>& frames, ViewFrame&& frame) {
+  std::sort(frame.contacts.begin(), frame.contacts.end(),
+            [](const ViewContact& x, const ViewContact& y) {
+              return std::pair(x.fixture_a, x.fixture_b) < std::pair(y.fixture_a, y.fixture_b);
+            });
+  frames.push_back(std::move(frame));
+}
+
+// The world's bodies and fixtures as indices, in creation order and fixture-list order: the
+// same in both runners' worlds, built from the same seed.
+struct WorldIndex {
+  std::unordered_map<const b2Body*, int> body;
+  std::unordered_map<const b2Fixture*, int> fixture;
+};
+
+WorldIndex index_world(const scenes::World& world, LockstepRecording& out) {
+  WorldIndex index;
+  const bool layout = out.bodies.empty();
+  int fixtures = 0;
+  for (const b2Body* b : world.bodies()) {
+    const int body = static_cast<int>(index.body.size());
+    index.body[b] = body;
+    if (layout) out.bodies.push_back(role_of(*b));
+    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+      index.fixture[f] = fixtures++;
+      if (layout) out.fixtures.push_back(fixture_of(body, *f->GetShape()));
+    }
+  }
+  if (index.body.size() != out.bodies.size() || std::size_t(fixtures) != out.fixtures.size()) {
+    throw std::logic_error("the two runners' worlds of '" + out.scene + "' differ in bodies");
+  }
+  return index;
+}
+
+std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::Config& config,
+                                    LockstepRecording& out) {
+  const scenes::Installation installed(runner, config);
+  scenes::SceneWorld scene(out.scene, out.seed);
+  scenes::World& world = scene.world();
+  const WorldIndex index = index_world(world, out);
+  const std::vector<b2Body*>& bodies = world.bodies();
+  std::vector<b2Transform> before(bodies.size());
+  std::vector<ViewFrame> frames;
+  for (int step = 0; step < out.steps; ++step) {
+    for (std::size_t i = 0; i < bodies.size(); ++i) before[i] = bodies[i]->GetTransform();
+    world.step();
+    ViewFrame frame;
+    frame.collide_ms = world->GetProfile().collide;
+    for (const b2Body* b : bodies) frame.poses.push_back(pose_of(*b));
+    for (b2Contact* c = world->GetContactList(); c != nullptr; c = c->GetNext()) {
+      const b2Fixture* fa = c->GetFixtureA();
+      const b2Fixture* fb = c->GetFixtureB();
+      const b2Body* ba = fa->GetBody();
+      const b2Body* bb = fb->GetBody();
+      ViewContact v;
+      v.fixture_a = index.fixture.at(fa);
+      v.fixture_b = index.fixture.at(fb);
+      v.manifold = view_of(*c->GetManifold(), ba->GetTransform(), *fa->GetShape(),
+                           bb->GetTransform(), *fb->GetShape());
+      if (runner && fa->GetType() == b2Shape::e_polygon && fb->GetType() == b2Shape::e_polygon) {
+        // On the poses the step's Collide saw (time-of-impact re-evaluations, at other poses, can
+        // show as marks).
+        mark_against_box2d(v, *static_cast<const b2PolygonShape*>(fa->GetShape()),
+                           before[index.body.at(ba)], ba->GetTransform(),
+                           *static_cast<const b2PolygonShape*>(fb->GetShape()),
+                           before[index.body.at(bb)], bb->GetTransform());
+      }
+      add_contact(frame, std::move(v));
+    }
+    add_frame(frames, std::move(frame));
+  }
+  return frames;
+}
+
+// The paper's triangles on their paths: one kinematic body each, their overlapping pairs handed
+// to the runner's collide function (the plug-in's with one memory per pair, as a contact keeps).
+std::vector<ViewFrame> record_paper(const scenes::Runner& runner, const box2d::Config& config,
+                                    LockstepRecording& out) {
+  namespace paper = scenes::paper;
+  std::vector<b2PolygonShape> shapes(paper::type_count);
+  for (int k = 0; k < paper::type_count; ++k) {
+    b2Vec2 v[3];
+    for (int i = 0; i < 3; ++i) {
+      const Vec2<double>& p = paper::triangle_types()[k][i];
+      v[i].Set(float(p.x()), float(p.y()));
+    }
+    shapes[k].Set(v, 3);
+  }
+  if (out.bodies.empty()) {
+    for (int k = 0; k < paper::type_count; ++k) {
+      out.bodies.push_back(DrawShape::Role::Kinematic);
+      out.fixtures.push_back(fixture_of(k, shapes[k]));
+    }
+  }
+  // One memory per pair i < j, at i * type_count + j.
+  std::vector<box2d::ContactMemory> memory(paper::type_count * paper::type_count);
+  std::vector<ViewFrame> frames;
+  for (int step = 0; step < out.steps; ++step) {
+    const double t = paper::start_time(out.seed) + step * paper::step_seconds;
+    ViewFrame frame;
+    std::vector<b2Transform> xf(paper::type_count);
+    for (int k = 0; k < paper::type_count; ++k) {
+      const paper::Pose p = paper::pose(k, t);
+      xf[k].Set(b2Vec2(float(p.position.x()), float(p.position.y())), float(p.angle));
+      frame.poses.push_back({xf[k].p.x, xf[k].p.y, float(p.angle)});
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::pair<std::pair<int, int>, b2Manifold>> manifolds;
+    for (const auto& [i, j] : paper::frame_at(t).pairs) {
+      b2Manifold m;
+      if (runner) {
+        box2d::collide_polygons(&m, *runner, shapes[i], xf[i], shapes[j], xf[j],
+                                &memory[i * paper::type_count + j], config);
+      } else {
+        b2CollidePolygons(&m, &shapes[i], xf[i], &shapes[j], xf[j]);
+      }
+      manifolds.push_back({{i, j}, m});
+    }
+    frame.collide_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+    for (const auto& [pair, m] : manifolds) {
+      const auto [i, j] = pair;
+      ViewContact v;
+      v.fixture_a = i;
+      v.fixture_b = j;
+      v.manifold = view_of(m, xf[i], shapes[i], xf[j], shapes[j]);
+      if (runner) mark_against_box2d(v, shapes[i], xf[i], xf[i], shapes[j], xf[j], xf[j]);
+      add_contact(frame, std::move(v));
+    }
+    add_frame(frames, std::move(frame));
+  }
+  return frames;
+}
+
+// Marks each touching contact of `frame` that `other` has touching too, deepest separations
+// within the tolerance, and counts.
+void agree(ViewFrame& frame, const ViewFrame& other) {
+  std::map<std::pair<int, int>, float> deepest;
+  for (const ViewContact& c : other.contacts) {
+    if (c.manifold.points == 0) continue;
+    deepest[std::minmax(c.fixture_a, c.fixture_b)] = c.manifold.deepest();
+  }
+  for (ViewContact& c : frame.contacts) {
+    if (c.manifold.points == 0) continue;
+    ++frame.touching;
+    const auto hit = deepest.find(std::minmax(c.fixture_a, c.fixture_b));
+    c.agrees = hit != deepest.end() &&
+               std::abs(double(hit->second) - double(c.manifold.deepest())) <= agreement_tolerance;
+    frame.agreeing += c.agrees;
+  }
+}
+
+}  // namespace
+
+float ViewManifold::deepest() const {
+  if (points == 0) return 0;
+  return points == 1 ? point[0].separation : std::min(point[0].separation, point[1].separation);
+}
+
+LockstepRecording record_lockstep(std::string_view name,
+                                  const std::array<scenes::Runner, 2>& runners, int steps,
+                                  std::uint64_t seed,
+                                  const std::array<box2d::Config, 2>& configs) {
+  if (scenes::find_scene(name) == nullptr) {
+    throw std::invalid_argument("no scene called '" + std::string(name) + "'");
+  }
+  if (steps < 1) throw std::invalid_argument("a recording needs at least 1 step");
+  LockstepRecording out;
+  out.scene = std::string(name);
+  out.seed = seed;
+  out.steps = steps;
+  out.runners = runners;
+  out.configs = configs;
+  const bool paper = name == "paper";
+  out.time_step = paper ? scenes::paper::step_seconds : double(scenes::time_step);
+  for (int r = 0; r < 2; ++r) {
+    out.frames[r] = paper ? record_paper(runners[r], configs[r], out)
+                          : record_world(runners[r], configs[r], out);
+  }
+  for (int step = 0; step < steps; ++step) {
+    agree(out.frames[0][step], out.frames[1][step]);
+    agree(out.frames[1][step], out.frames[0][step]);
+  }
+  return out;
+}
+
+}  // namespace dyop::experiments
