@@ -18,6 +18,14 @@
 namespace dyop::box2d::testing {
 namespace {
 
+// The rule as installed by default, every evaluation run in full (recycling off): these tests
+// count the evaluations the rule is in force in (`Stats::internal_edge_pairs`).
+Config counted() {
+  Config c;
+  c.recycle_distance = 0;
+  return c;
+}
+
 const scenes::Material kIce{1.0f, 0.0f};
 constexpr float kGlideVerticalSpeed = 0.05f;  // m/s: the bound for a glide
 constexpr float kGlideTravel = 0.98f;         // of speed × time
@@ -95,7 +103,7 @@ TEST(SharedEdgesAcrossBodies, EdgesSharedByKinematicBodiesStayOutlineEdges) {
 // masks again (no more rule pairs: G and F alone have no internal edge), and again after.
 void expect_masks_follow(const std::function<void(b2Body*)>& change,
                          const std::function<void(b2Body*)>& restore, float body_x) {
-  ASSERT_TRUE(install(Backend::Dyop).ok());
+  ASSERT_TRUE(install(Backend::Dyop, counted()).ok());
   World world;
   b2Body* g = add_body(world, b2_staticBody, b2Vec2(0, 0));
   add_triangle(g, {0, 0}, {0, -1}, {4, 0});
@@ -149,7 +157,7 @@ TEST(SharedEdgesAcrossBodies, NeighbourDisabledLeavesAnOutlineEdge) {
 // the neighbour, so nothing tells it that the neighbour moved away (the world's fixtures are the
 // same), and its contact with G keeps G's edge internal; `forget_internal_edges` makes it look.
 TEST(SharedEdgesAcrossBodies, NeighbourMovedFarFromABodyIsSeenAfterForgetInternalEdges) {
-  ASSERT_TRUE(install(Backend::Dyop).ok());
+  ASSERT_TRUE(install(Backend::Dyop, counted()).ok());
   World world;
   b2Body* g = add_body(world, b2_staticBody, b2Vec2(0, 0));
   add_triangle(g, {0, 0}, {0, -1}, {4, 0});
