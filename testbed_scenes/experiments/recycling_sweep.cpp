@@ -42,7 +42,7 @@ std::vector<RecyclingRecord> run_recycling_sweep(const RecyclingSweepOptions& op
                         run(name, std::nullopt, steps, options.seed, config, true)};
     out.push_back(std::move(own));
 
-    for (const float distance : recycle_distances) {
+    for (const float distance : options.distances) {
       config.recycle_distance = distance;
       std::vector<scenes::SceneMetrics> timed;
       RecyclingRecord r{name, SweepRow::Plugin, distance, std::nullopt, 0, std::nullopt};

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Run time against error for manifold recycling (`box2d::Config::recycle_distance`), per scene:
-/// - for each distance of `recycle_distances` (0: off), the plug-in's `dyop` with that distance
+/// - for each distance of `RecyclingSweepOptions::distances` (0: off), the plug-in's `dyop` with that distance
 ///   against Box2D's own contact (uninstalled), alternating in one process
 ///   (`measure_in_world`): narrow phase, `SolveTOI` and step; the share of evaluations that kept
 ///   their manifold; and, in one more run with `Scene::check_manifolds`, what the solver got
@@ -24,8 +24,8 @@
 
 namespace dyop::experiments {
 
-/// The distances swept (metres; 0: recycling off).
-inline constexpr float recycle_distances[] = {0.0f, 0.001f, 0.005f, 0.01f, 0.02f, 0.05f};
+/// The distances of a full sweep (metres; 0: recycling off).
+inline const std::vector<float> recycle_distances = {0.0f, 0.001f, 0.005f, 0.01f, 0.02f, 0.05f};
 
 /// What a sweep row measured.
 enum class SweepRow : std::uint8_t {
@@ -51,6 +51,7 @@ struct RecyclingRecord {
 /// What to sweep.
 struct RecyclingSweepOptions {
   std::vector<std::string> scenes;  ///< catalogue names (Box2D scenes)
+  std::vector<float> distances = recycle_distances;  ///< metres, each ≥ 0 (0: off)
   /// Steps of every run of a scene (by name).
   std::function<int(const std::string&)> steps;
   int repetitions = 2;  ///< alternating runs of each side

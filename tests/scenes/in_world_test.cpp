@@ -11,6 +11,7 @@
 #include "report/compare_in_world.hpp"
 #include "experiments/compare.hpp"
 #include "experiments/in_world.hpp"
+#include "experiments/recycling_sweep.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -90,6 +91,37 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
             static_cast<long>(rows.size()) + 1);
   EXPECT_EQ(text.rfind("scene,backend,steps,repetitions,narrowphase_ms_own", 0), 0u);
+}
+
+// The recycling sweep of one scene: Box2D's own accuracy, one row per distance (times against
+// Box2D's own, the share kept, the checked run's errors), then the floor (times only).
+TEST(RecyclingSweep, GivesOwnAccuracyEveryDistanceAndTheFloor) {
+  RecyclingSweepOptions o;
+  o.scenes = {"stack"};
+  o.distances = {0.0f, 0.01f};
+  o.steps = [](const std::string&) { return 60; };
+  o.repetitions = 1;
+  std::ostringstream progress;
+  const std::vector<RecyclingRecord> rows = run_recycling_sweep(o, progress);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0].row, SweepRow::Own);
+  ASSERT_TRUE(rows[0].accuracy && rows[0].accuracy->manifold_errors);
+  EXPECT_EQ(rows[0].accuracy->manifold_errors->kept_max, 0.0) << "Box2D's own keeps nothing";
+  EXPECT_FALSE(rows[0].timing.has_value());
+  for (int i : {1, 2}) {
+    const RecyclingRecord& r = rows[static_cast<std::size_t>(i)];
+    EXPECT_EQ(r.row, SweepRow::Plugin);
+    ASSERT_TRUE(r.timing && r.accuracy && r.accuracy->manifold_errors);
+    EXPECT_GT(r.timing->own.narrowphase_ms, 0);
+    EXPECT_GT(r.timing->plugin.step_ms, 0);
+    EXPECT_GT(r.accuracy->manifold_errors->touching, 0u);
+  }
+  EXPECT_EQ(rows[1].recycled_share, 0.0) << "off keeps nothing";
+  EXPECT_GT(rows[2].recycled_share, 0.5) << "a resting stack keeps most of its manifolds";
+  EXPECT_EQ(rows[3].row, SweepRow::Floor);
+  ASSERT_TRUE(rows[3].timing.has_value());
+  EXPECT_FALSE(rows[3].accuracy.has_value());
+  EXPECT_NE(progress.str().find("recycling sweep stack"), std::string::npos);
 }
 
 }  // namespace
