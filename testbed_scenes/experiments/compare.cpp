@@ -63,8 +63,7 @@ int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
 std::vector<box2d::Backend> in_world_backends(bool quick) {
   if (!quick) return {std::begin(box2d::all_backends), std::end(box2d::all_backends)};
-  return {box2d::Backend::Dyop, box2d::Backend::Sat, box2d::Backend::LinCanny,
-          box2d::Backend::Box2D};
+  return {box2d::Backend::Dyop, box2d::Backend::Box2D};
 }
 
 std::vector<const scenes::SceneInfo*> selected_scenes(const CompareOptions& options) {

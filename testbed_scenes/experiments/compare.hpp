@@ -37,9 +37,9 @@ struct CompareOptions {
   box2d::Config skips;
 };
 
-/// The backends of the in-world section: every backend in a full run; `--quick` keeps the two
-/// exact ones, warm Lin–Canny (the paper's baseline) and `box2d` (Box2D's code through the
-/// plug-in: what the plug-in's path itself costs).
+/// The backends of the in-world section: every backend in a full run; `--quick` (the main
+/// command's overview, kept short) keeps `dyop`, what a user installs, and `box2d` (Box2D's code
+/// through the plug-in: what the plug-in's path itself costs).
 std::vector<box2d::Backend> in_world_backends(bool quick);
 
 /// Timed repetitions of the Figure-7 experiment (each figure is their median).
