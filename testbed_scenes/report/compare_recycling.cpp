@@ -29,8 +29,8 @@ constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 const char* row_name(SweepRow r) {
   switch (r) {
-    case SweepRow::Own: return "box2d-own";
-    case SweepRow::Plugin: return "dyop";
+    case SweepRow::Own: return scenes::box2d_own;
+    case SweepRow::Plugin: return box2d::name(box2d::Backend::Dyop);  // the sweep's backend
     case SweepRow::Floor: return "floor";
   }
   return "?";
