@@ -24,7 +24,7 @@ namespace {
 // a volatile.
 volatile double g_sink = 0;
 
-// Shortest timed pass. One sweep over 8192 pairs takes 40 µs to 4 ms; timed alone, such short
+// Shortest timed pass. One sweep over 8192 pairs took 40 µs to 4 ms; timed alone, such short
 // sweeps measured the fast methods up to 1.8× slower than Google Benchmark's long runs did in
 // the same build (dyop Depth 34 against 19 ns), while Box2D's longer sweeps agreed. A pass
 // therefore repeats the sweep until it lasts this long.

@@ -126,7 +126,7 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   out.overlap = overlap;
   const int all_a = argmin3(overlap, 0);
   const int all_b = argmin3(overlap, 3);
-  out.least = overlap[all_b] < overlap[all_a] ? all_b : all_a;
+  out.least = select_index(overlap[all_b] < overlap[all_a], all_b, all_a);
   bool reached_a = false;  // B reaches an edge of A
   bool reached_b = false;  // A reaches an edge of B
   out.best_a = least_usable(f, q, overlap, 0, reached_a);

@@ -28,55 +28,25 @@ inline Least3<T> least3(T d0, T d1, T d2) {
   return {two ? d2 : m, one, two};
 }
 
-// Index and value of the smallest of three (first on ties). GCC compiles the index to branches:
-// where a long chain waits on it (the axis a Depth query settles on, then its overlap, status and
-// normal) a predicted branch lets the chain start early, and that wins even though random pairs
-// mispredict it about once per query (measured: 19 ns per Depth query, 32 ns with `min3_select`).
-template <class T>
-inline void min3(T d0, T d1, T d2, T& value, int& index) {
-  const Least3<T> l = least3(d0, d1, d2);
-  value = l.value;
-  index = l.two ? 2 : (l.one ? 1 : 0);
-}
-
 // `pick ? a : b` for indices, by masks: GCC compiles an int ternary to a branch.
 inline int select_index(bool pick, int a, int b) {
   const int mask = -static_cast<int>(pick);
   return (a & mask) | (b & ~mask);
 }
 
-// `min3` without branches, where little waits on the index and its outcome is unpredictable (a
-// manifold's incident edge, the deep vertex of the chosen axis: with `min3` a Manifold query
-// mispredicts 4.9 times, with this 2.1 times, and takes 53 ns instead of 65).
+// Index and value of the smallest of three (first on ties), without a branch on the data. Which
+// of three random values is least is a coin toss no predictor can learn, except one that has seen
+// the same inputs in the same order before: over a repeated set of 8,192 random pairs this
+// host's predictor (AMD EPYC, AVX-512) learns such branches, and a branchy index looked faster
+// (Depth 23 ns against 32); over 131,072 pairs, which it cannot learn, the branchy index costs
+// Depth 38.5 ns and Manifold 80 ns against b2CollidePolygons' 96.5 (0.40x and 0.83x: the ratios
+// measured on a Zen 3 host, whose predictor learns less). See docs/design.md, "Per pair on every
+// host".
 template <class T>
-inline void min3_select(T d0, T d1, T d2, T& value, int& index) {
+inline void min3(T d0, T d1, T d2, T& value, int& index) {
   const Least3<T> l = least3(d0, d1, d2);
   value = l.value;
   index = select_index(l.two, 2, static_cast<int>(l.one));
-}
-
-// Axis of A's edge i: the edge line is A's support; B's deepest vertex is the least along n.
-template <class T>
-inline AxisOverlap<T> overlap_on_a_edge(const PairFrame<T>& f, int i) {
-  const Vec2<T>& n = f.ta.normal(i);
-  AxisOverlap<T> r;
-  r.axis = i;
-  T least;
-  min3_select(n.dot(f.b[0]), n.dot(f.b[1]), n.dot(f.b[2]), least, r.deep);
-  r.overlap = n.dot(f.a[i]) - least;
-  return r;
-}
-
-// Axis of B's edge j (u = −n_j): overlap = n_j·b_j − min_A(n_j·a); the deep vertex is A's.
-template <class T>
-inline AxisOverlap<T> overlap_on_b_edge(const PairFrame<T>& f, int j) {
-  const Vec2<T>& n = f.tb.normal(j);
-  AxisOverlap<T> r;
-  r.axis = 3 + j;
-  T least;
-  min3_select(n.dot(f.a[0]), n.dot(f.a[1]), n.dot(f.a[2]), least, r.deep);
-  r.overlap = n.dot(f.b[j]) - least;
-  return r;
 }
 
 // All six overlaps (index k as in `AxisOverlap::axis`), without the deep vertices: what the
@@ -104,9 +74,23 @@ inline int argmin3(const std::array<T, 6>& v, int first) {
   return first + index;
 }
 
+// Axis k (as `AxisOverlap::axis`) with the other triangle's deepest vertex. Axis of A's edge i:
+// the edge line is A's support, overlap = n_i·a_i − min_B(n_i·b). Axis of B's edge j (u = −n_j):
+// overlap = n_j·b_j − min_A(n_j·a), the deep vertex A's. The face's triangle and the other's
+// vertices are selected, not branched on: whose face a random pair settles on does not predict.
 template <class T>
 inline AxisOverlap<T> overlap_on_axis(const PairFrame<T>& f, int k) {
-  return k < 3 ? overlap_on_a_edge(f, k) : overlap_on_b_edge(f, k - 3);
+  const bool on_b = k >= 3;
+  const int e = k - 3 * static_cast<int>(on_b);
+  const Vec2<T>& n = (on_b ? f.tb : f.ta).normal(e);
+  const std::array<Vec2<T>, 3>& own = on_b ? f.b : f.a;
+  const std::array<Vec2<T>, 3>& other = on_b ? f.a : f.b;
+  AxisOverlap<T> r;
+  r.axis = k;
+  T least;
+  min3(n.dot(other[0]), n.dot(other[1]), n.dot(other[2]), least, r.deep);
+  r.overlap = n.dot(own[e]) - least;
+  return r;
 }
 
 }  // namespace dyop::detail

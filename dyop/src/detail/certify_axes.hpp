@@ -83,7 +83,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   Result<T> r;
   const int best_a = argmin3(overlap, 0);
   const int best_b = argmin3(overlap, 3);
-  const int least = overlap[best_b] < overlap[best_a] ? best_b : best_a;  // ties: A's face
+  const int least = select_index(overlap[best_b] < overlap[best_a], best_b, best_a);  // ties: A's
   const AxisOverlap<T> reference =
       pick_reference(AxisOverlap<T>{best_a, overlap[best_a], 0},
                      AxisOverlap<T>{best_b, overlap[best_b], 0}, q.face_hysteresis);

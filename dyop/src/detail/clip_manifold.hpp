@@ -61,16 +61,19 @@ struct ClippedEnd {
 
 // Box2D clips the incident edge against the start side line, then the end side line; along the
 // edge the tangential coordinate s is linear, so both clips amount to clamping each end's s into
-// [lo, hi] and moving the end by the same fraction. No branch on which ends are cut.
+// [lo, hi] and moving the end by the same fraction. No branch on which ends are cut: an end not
+// cut has clamped == s, so its fraction is `from` exactly; the divisor is made safe for an edge
+// whose ends share s (then neither end is cut, or the caller returned before).
 template <class T>
 inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
   const T clamped = std::min(std::max(s, lo), hi);
   const T ds = s_other - s;
+  const T divisor = ds != T(0) ? ds : T(1);
   ClippedEnd<T> out;
   // Start (1) below the range, End (2) above it, None (0) inside: arithmetic, not branches.
   static_assert(static_cast<int>(ClipSide::Start) == 1 && static_cast<int>(ClipSide::End) == 2);
   out.side = static_cast<ClipSide>(static_cast<int>(s < lo) | static_cast<int>(s > hi) << 1);
-  out.along = out.side == ClipSide::None ? from : from + (clamped - s) / ds * (T(1) - 2 * from);
+  out.along = from + (clamped - s) / divisor * (T(1) - 2 * from);
   return out;
 }
 
@@ -101,7 +104,7 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
 
   T least;
   int inc;
-  min3_select(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
+  min3(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
   m.incident_edge = static_cast<std::uint8_t>(it.input_edge(inc));
 
   const Vec2<T>& v1 = rv[e];
@@ -131,11 +134,14 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
     const bool cut = ends[k].side != ClipSide::None;
     const Vec2<T> p = cut ? Vec2<T>(p0 + ends[k].along * (p1 - p0)) : *vertex_point[k];
     const T separation = n.dot(p) - front;
-    if (separation > margin) continue;
-    ManifoldPoint<T>& out = m.points[m.point_count++];
+    // Written into the next slot whether kept or not, and counted only when within the margin:
+    // whether an end lies beyond the margin is not predictable (slots past `point_count` are
+    // not part of the answer).
+    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
     out.point = p + f.origin;
     out.separation = separation;
     out.key = keys.key(ends[k].side, it.input_vertex(vertex[k]));
+    m.point_count += static_cast<int>(separation <= margin);
   }
 }
 

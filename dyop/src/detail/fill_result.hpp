@@ -15,12 +15,13 @@ inline T touching_band(const PairFrame<T>& f) {
   return touching_tolerance<T>() * f.scale;
 }
 
-// Status of a signed overlap (positive: penetrating) against the touching band.
+// Status of a signed overlap (positive: penetrating) against the touching band: counted, not
+// branched on (which status a random pair has is not predictable).
 template <class T>
 inline Status status_of_overlap(T overlap, T band) {
-  if (overlap > band) return Status::Penetrating;
-  if (overlap >= -band) return Status::Touching;
-  return Status::Separated;
+  static_assert(static_cast<int>(Status::Separated) == 0 && static_cast<int>(Status::Touching) == 1 &&
+                static_cast<int>(Status::Penetrating) == 2);
+  return static_cast<Status>(static_cast<int>(overlap >= -band) + static_cast<int>(overlap > band));
 }
 
 template <class T>
@@ -91,10 +92,13 @@ void fill_separated(const PairFrame<T>& f, Level level, Result<T>& r, const Find
 }
 
 // Box2D's reference-face rule: B's best face only when it beats A's by more than the hysteresis.
+// Field by field, by selects: whose face it is does not predict.
 template <class T>
-inline const AxisOverlap<T>& pick_reference(const AxisOverlap<T>& best_a,
-                                            const AxisOverlap<T>& best_b, T hysteresis) {
-  return best_b.overlap < best_a.overlap - hysteresis ? best_b : best_a;
+inline AxisOverlap<T> pick_reference(const AxisOverlap<T>& best_a, const AxisOverlap<T>& best_b,
+                                     T hysteresis) {
+  const bool b = best_b.overlap < best_a.overlap - hysteresis;
+  return {select_index(b, best_b.axis, best_a.axis), b ? best_b.overlap : best_a.overlap,
+          select_index(b, best_b.deep, best_a.deep)};
 }
 
 // Box2D's reference face from all six overlaps: each triangle's best face, then the hysteresis.

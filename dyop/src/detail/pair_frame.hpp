@@ -31,7 +31,13 @@ struct PairFrame {
   }
 
   // Axis k: 0..2 are A's edge normals, 3..5 B's negated edge normals. `axis(k)` points from A to B.
-  Vec2<T> axis(int k) const { return k < 3 ? ta.normal(k) : Vec2<T>(-tb.normal(k - 3)); }
+  // Selected by index and sign, not branched on: whose face a random pair settles on does not
+  // predict (n·(−1) is −n bit for bit).
+  Vec2<T> axis(int k) const {
+    static constexpr T kSign[2] = {T(1), T(-1)};
+    const bool on_b = k >= 3;
+    return (on_b ? tb : ta).normal(k - 3 * static_cast<int>(on_b)) * kSign[on_b];
+  }
 };
 
 // The next index around a triangle, looked up: a branch on `i == 2` mispredicts on random pairs.
