@@ -34,14 +34,12 @@ inline int select_index(bool pick, int a, int b) {
   return (a & mask) | (b & ~mask);
 }
 
-// Index and value of the smallest of three (first on ties), without a branch on the data. Which
+// Index and value of the smallest of three (first on ties), without a branch on the data: which
 // of three random values is least is a coin toss no predictor can learn, except one that has seen
-// the same inputs in the same order before: over a repeated set of 8,192 random pairs this
-// host's predictor (AMD EPYC, AVX-512) learns such branches, and a branchy index looked faster
-// (Depth 23 ns against 32); over 131,072 pairs, which it cannot learn, the branchy index costs
-// Depth 38.5 ns and Manifold 80 ns against b2CollidePolygons' 96.5 (0.40x and 0.83x: the ratios
-// measured on a Zen 3 host, whose predictor learns less). See docs/design.md, "Per pair on every
-// host".
+// the same inputs in the same order before. Over a repeated set of 8192 random pairs the AMD EPYC
+// (AVX-512) host learned such branches and a branchy index looked faster; over 131,072 pairs the
+// per-pair path with its branches cost `dyop` Depth 38.5 ns, without them 24.8 ns (docs/design.md,
+// "Per pair").
 template <class T>
 inline void min3(T d0, T d1, T d2, T& value, int& index) {
   const Least3<T> l = least3(d0, d1, d2);
