@@ -78,11 +78,14 @@ inline int argmin3(const std::array<T, 6>& v, int first) {
 // vertices are selected, not branched on: whose face a random pair settles on does not predict.
 template <class T>
 inline AxisOverlap<T> overlap_on_axis(const PairFrame<T>& f, int k) {
-  const bool on_b = k >= 3;
-  const int e = k - 3 * static_cast<int>(on_b);
-  const Vec2<T>& n = (on_b ? f.tb : f.ta).normal(e);
-  const std::array<Vec2<T>, 3>& own = on_b ? f.b : f.a;
-  const std::array<Vec2<T>, 3>& other = on_b ? f.a : f.b;
+  // Looked up by index: GCC compiles a choice between references to a branch.
+  const Triangle<T>* const face_triangle[2] = {&f.ta, &f.tb};
+  const std::array<Vec2<T>, 3>* const vertices[2] = {&f.a, &f.b};
+  const int on_b = static_cast<int>(k >= 3);
+  const int e = k - 3 * on_b;
+  const Vec2<T>& n = face_triangle[on_b]->normal(e);
+  const std::array<Vec2<T>, 3>& own = *vertices[on_b];
+  const std::array<Vec2<T>, 3>& other = *vertices[1 - on_b];
   AxisOverlap<T> r;
   r.axis = k;
   T least;

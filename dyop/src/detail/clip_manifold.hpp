@@ -44,9 +44,10 @@ struct KeyParts {
   // A point: clipped at `side` (Start, End), or not clipped (None), at incident vertex `vertex`
   // (caller's index).
   std::uint32_t key(ClipSide side, int vertex) const {
-    const bool cut = side != ClipSide::None;
-    const std::uint32_t ref = cut ? ref_vertex[side == ClipSide::End] : ref_edge;
-    const std::uint32_t inc = cut ? inc_edge : static_cast<std::uint32_t>(vertex);
+    // Selected by mask, not branched on: whether a side line cut the point does not predict.
+    const std::uint32_t cut = 0u - static_cast<std::uint32_t>(side != ClipSide::None);
+    const std::uint32_t ref = (ref_vertex[side == ClipSide::End] & cut) | (ref_edge & ~cut);
+    const std::uint32_t inc = (inc_edge & cut) | (static_cast<std::uint32_t>(vertex) & ~cut);
     return ref << ref_shift | inc << inc_shift;
   }
 };
@@ -132,7 +133,9 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
   for (int k = 0; k < 2; ++k) {
     // An end the side lines did not cut is the incident vertex itself, bit for bit.
     const bool cut = ends[k].side != ClipSide::None;
-    const Vec2<T> p = cut ? Vec2<T>(p0 + ends[k].along * (p1 - p0)) : *vertex_point[k];
+    // Looked up by index, not branched on: whether a side line cuts an end does not predict.
+    const Vec2<T> choice[2] = {*vertex_point[k], p0 + ends[k].along * (p1 - p0)};
+    const Vec2<T>& p = choice[static_cast<int>(cut)];
     const T separation = n.dot(p) - front;
     // Written into the next slot whether kept or not, and counted only when within the margin:
     // whether an end lies beyond the margin is not predictable (slots past `point_count` are
