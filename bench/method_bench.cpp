@@ -2,8 +2,9 @@
 // registry (dyop/method.hpp) at every level and precision it has (a warm-startable method as
 // <name>-cold and <name>-warm), one pair per iteration over 131,072 distinct seeded pairs per
 // class (prepared outside the timed loop), so that no branch predictor learns the set: an AMD
-// EPYC (AVX-512) host learned a repeated set of 8192 and timed data-dependent branches as free. Compare methods by their ratio to BM_box2d/<class>/manifold/float
-// in the same run: the machines are shared and noisy. Batch kernel benchmarks time a whole
+// EPYC (AVX-512) host learned a repeated set of 8192 and timed data-dependent branches as free.
+// Compare methods by their ratio to BM_box2d/<class>/manifold/float in the same run: the
+// machines are shared and noisy. Batch kernel benchmarks time a whole
 // batch per iteration; their items_per_second is pairs per second. BM_stream/<scene>/<backend>
 // replays a Box2D scene's recorded contact updates, one per iteration (box2d-own: b2CollidePolygons).
 #include <benchmark/benchmark.h>
@@ -47,7 +48,9 @@ template <class T>
 const PairSet<T>& pairs_of(InputClass c) {
   static std::map<InputClass, PairSet<T>> sets;
   auto it = sets.find(c);
-  if (it == sets.end()) it = sets.emplace(c, workloads::make_pair_set<T>(c, pair_count(), kSeed)).first;
+  if (it == sets.end()) {
+    it = sets.emplace(c, workloads::make_pair_set<T>(c, pair_count(), kSeed)).first;
+  }
   return it->second;
 }
 

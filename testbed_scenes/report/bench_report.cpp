@@ -53,7 +53,8 @@ Records bench_records(const std::vector<BenchRecord>& records) {
                {"invalid", "invalid", "inval", 5}});
   for (const BenchRecord& r : records) {
     out.add({Value::text(adapters::name(r.method)), Value::text(workloads::name(r.cls)),
-             Value::text(name(r.level)), Value::text(workloads::name(r.precision)), Value::count(r.pairs), Value::count(r.timed_pairs),
+             Value::text(name(r.level)), Value::text(workloads::name(r.precision)),
+             Value::count(r.pairs), Value::count(r.timed_pairs),
              Value::number(r.ns_per_pair, "%.1f"),
              Value::number(r.ratio_vs_box2d, "%.3f"), Value::number(r.err_max, "%.2e"),
              Value::number(r.err_mean, "%.2e"), Value::number(r.err_p99, "%.2e"),

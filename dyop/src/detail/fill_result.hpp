@@ -19,9 +19,11 @@ inline T touching_band(const PairFrame<T>& f) {
 // branched on (which status a random pair has is not predictable).
 template <class T>
 inline Status status_of_overlap(T overlap, T band) {
-  static_assert(static_cast<int>(Status::Separated) == 0 && static_cast<int>(Status::Touching) == 1 &&
+  static_assert(static_cast<int>(Status::Separated) == 0 &&
+                static_cast<int>(Status::Touching) == 1 &&
                 static_cast<int>(Status::Penetrating) == 2);
-  return static_cast<Status>(static_cast<int>(overlap >= -band) + static_cast<int>(overlap > band));
+  const int above = static_cast<int>(overlap >= -band) + static_cast<int>(overlap > band);
+  return static_cast<Status>(above);
 }
 
 template <class T>
