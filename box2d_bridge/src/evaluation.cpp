@@ -20,9 +20,8 @@ float bounding_radius(const b2PolygonShape& shape) {
 }
 
 bool valid_triangle(const b2PolygonShape& shape) {
-  return Triangle<float>::make(vec(shape.m_vertices[0]), vec(shape.m_vertices[1]),
-                               vec(shape.m_vertices[2]))
-      .ok();
+  return Triangle<float>::check(vec(shape.m_vertices[0]), vec(shape.m_vertices[1]),
+                                vec(shape.m_vertices[2])) == TriangleError::None;
 }
 
 // The shape's triangle (Box2D's CCW vertices and its own unit normals) in its body frame, or

@@ -1,18 +1,21 @@
 #pragma once
 // Internal: the plug-in's one evaluation of a polygon pair, for a world's contact and for
-// `collide_polygons` alike. What answers (the backend's method, or Box2D's `b2CollidePolygons`,
-// called in one place), which skips apply, where the internal-edge masks come from and what is
-// counted are decided here and nowhere else.
+// `collide_polygons` alike. What answers (the backend's method, or Box2D's `b2CollidePolygons`),
+// which skips apply, where the internal-edge masks come from and what is counted are decided here
+// and nowhere else.
 //
-// Inline, with the contact's `Evaluate`: most evaluations in a world end in a skip that costs a
-// few dozen instructions, and Box2D's own contact answers a pair apart after one face test, so
-// every call and every transformed vertex counts. The skip tests rotate one normal into the other
-// body's frame instead of moving three vertices. The method's run is out of line (evaluation.cpp).
+// Inline: most evaluations in a world end in a kept manifold or a skip that costs a few dozen
+// instructions, and Box2D's own contact answers a pair apart after one face test, so every call,
+// every register saved and every transformed vertex counts. The skip tests rotate one normal into
+// the other body's frame instead of moving three vertices. The method's run is out of line
+// (evaluation.cpp), and the world's contact runs the steps as paths of their own (see
+// `skip_or_answer` and `TriangleContact::Evaluate`).
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "dyop/box2d.hpp"
 #include "installation.hpp"
@@ -79,13 +82,6 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
   return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
 }
 
-// Who answered a pair.
-enum class Answer : std::uint8_t {
-  Plugin,          // the backend's method, a skip or a kept manifold: `manifold` is written
-  Box2DTriangles,  // a triangle pair for Box2D's code (backend `Box2D`, or a fallback)
-  Box2DOther,      // uninstalled, or a larger polygon: Box2D's code, as its own contact
-};
-
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
 // (their stamp moved, or they were forgotten) recomputes.
@@ -114,76 +110,125 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
                                 face_reach(margin));
 }
 
-// The installed backend's part of an evaluation (counted): a kept manifold, a skip, the method's
-// answer, or who Box2D's code answers for. `recycling`: the world's contact's (nullptr:
-// `collide_polygons`, which never keeps a manifold). Always inlined into the contact's
-// `Evaluate`: GCC 12 left it out of line, and the call cost the pyramid's narrow phase 2.7 %
-// (callgrind, 150 steps, Collide: 87.4 M instructions against 85.1 M inlined, as the evaluation
-// was before).
-[[gnu::always_inline]] inline Answer plug_in_answer(b2Manifold* manifold, const Setting& setting,
-                                                    const PolygonPair& p, ContactMemory& memory,
-                                                    const TriangleContact* contact,
-                                                    ManifoldRecycling* recycling) {
-  using Shapes = ContactMemory::Shapes;
-  ThreadCounters& count = counters();
-  if (memory.shapes == Shapes::Unchecked) look_at_shapes(p.a, p.b, memory);
-  if (memory.shapes == Shapes::Polygons) {
-    count.polygon_pairs.add();
-    return Answer::Box2DOther;
-  }
-  count.triangle_pairs[static_cast<int>(*setting.backend)].add();
+// An evaluation of a triangle pair under an install runs three steps, each counted: a kept
+// manifold (a world's contact only), a skip, the answer afresh. `evaluate` runs them in one
+// function; a world's contact runs them as paths of their own (see `TriangleContact::Evaluate`),
+// each reached by a jump, so that the common outcomes (a kept manifold in a resting scene, a
+// skip in a rain) pay no register saves for the rare ones.
 
-  const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
+// Step 1: true when the world's contact keeps the manifold in `manifold` (see `keeps_manifold`);
+// otherwise its kept pose is forgotten.
+[[gnu::always_inline]] inline bool kept(const b2Manifold& manifold, const Setting& setting,
+                                        const PolygonPair& p, const ContactMemory& memory,
+                                        ManifoldRecycling& recycling,
+                                        const TriangleContact* contact) {
+  // Only a method's run remembers a pose, so the shapes are triangles; an uninstall keeps the
+  // epoch, hence the method's check.
+  if (setting.method && keeps_manifold(setting, p, b2MulT(p.xf_a, p.xf_b), memory, recycling,
+                                       contact, p.a.m_radius + p.b.m_radius)) {
+    ThreadCounters& count = counters();
+    count.triangle_pairs[static_cast<int>(*setting.backend)].add();
+    count.recycled.add();
+    if (manifold.pointCount > 0) count.manifolds.add();
+    return true;
+  }
+  recycling.forget();
+  return false;
+}
+
+// Step 2's test, for a pair of `Shapes::Triangles` or `InvalidTriangles` once nothing was kept:
+// the skip that proves the manifold empty (`Config::bounds_early_out`, `Config::warm_axis`), if
+// any. `b_in_a`: B's body frame given in A's.
+inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
+                                   const b2Transform& b_in_a, const ContactMemory& memory) {
   const float margin = p.a.m_radius + p.b.m_radius;
-  const bool recycles = recycling && setting.recycles();
-  if (recycles) {
-    if (keeps_manifold(setting, p, b_in_a, memory, *recycling, contact, margin)) {
-      count.recycled.add();
+  if (setting.config.bounds_early_out && circles_apart(p.a, p.b, b_in_a, memory, reach(margin))) {
+    return Skip::Bounds;
+  }
+  if (setting.config.warm_axis && setting.method && memory.last_face >= 0 &&
+      face_separation(memory.last_face, p.a, p.b, b_in_a) > face_reach(margin)) {
+    return Skip::WarmAxis;
+  }
+  return std::nullopt;
+}
+
+// Step 3, once nothing was kept or skipped: the method's answer, remembered for keeping
+// (`recycling`: the world's contact's, nullptr for `collide_polygons`); Box2D's code for
+// `Backend::Box2D` (its answer, not a fallback), for invalid triangles and for a method that
+// could not answer (a counted fallback, so that the world goes on).
+[[gnu::always_inline]] inline void answer_afresh(b2Manifold* manifold, const Setting& setting,
+                                                 const PolygonPair& p, const b2Transform& b_in_a,
+                                                 ContactMemory& memory,
+                                                 const TriangleContact* contact,
+                                                 ManifoldRecycling* recycling) {
+  ThreadCounters& count = counters();
+  count.triangle_pairs[static_cast<int>(*setting.backend)].add();
+  if (setting.method) {
+    if (memory.shapes == ContactMemory::Shapes::Triangles &&
+        run_method(manifold, setting, p, b_in_a, memory, contact)) {
       if (manifold->pointCount > 0) count.manifolds.add();
-      return Answer::Plugin;
+      if (recycling && setting.recycles()) {
+        const float slack =
+            setting.never_recompute
+                ? 1.0f
+                : recycle_slack(setting, *manifold, p, b_in_a, memory, p.a.m_radius + p.b.m_radius);
+        recycling->remember(b_in_a, p.b.m_centroid, slack, setting.epoch);
+      }
+      return;
     }
-    recycling->forget();
+    count.fallbacks.add();
   }
-  const bool skip_bounds =
-      setting.config.bounds_early_out && circles_apart(p.a, p.b, b_in_a, memory, reach(margin));
-  if (skip_bounds || (setting.config.warm_axis && setting.method && memory.last_face >= 0 &&
-                      face_separation(memory.last_face, p.a, p.b, b_in_a) > face_reach(margin))) {
-    manifold->pointCount = 0;
-    count.skipped[static_cast<int>(skip_bounds ? Skip::Bounds : Skip::WarmAxis)].add();
-    if (recycles && setting.never_recompute) recycling->remember(b_in_a, 1, setting.epoch);
-    return Answer::Plugin;
+  b2CollidePolygons(manifold, &p.a, p.xf_a, &p.b, p.xf_b);
+  if (manifold->pointCount > 0) count.manifolds.add();
+}
+
+// Steps 2 and 3 for a pair of `Shapes::Triangles` or `InvalidTriangles` under an install, once
+// nothing was kept: `afresh(b_in_a)` runs step 3 (`answer_afresh`, inline or as the contact's
+// own out-of-line path). A skip is counted last: the thread's first count makes its counters (a
+// call), and nothing else is then left to keep across it.
+template <class Afresh>
+[[gnu::always_inline]] inline void skip_or_answer(b2Manifold* manifold, const Setting& setting,
+                                                  const PolygonPair& p,
+                                                  const ContactMemory& memory,
+                                                  ManifoldRecycling* recycling,
+                                                  const Afresh& afresh) {
+  const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
+  const std::optional<Skip> skip = skip_of(setting, p, b_in_a, memory);
+  if (!skip) return afresh(b_in_a);
+  manifold->pointCount = 0;
+  if (recycling && setting.recycles() && setting.never_recompute) {
+    recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
   }
-  // `Backend::Box2D` has no method: Box2D's own code is its answer, not a fallback. A method
-  // that cannot answer falls back so that the world goes on, and is counted.
-  if (!setting.method) return Answer::Box2DTriangles;
-  if (memory.shapes == Shapes::Triangles &&
-      run_method(manifold, setting, p, b_in_a, memory, contact)) {
-    if (manifold->pointCount > 0) count.manifolds.add();
-    if (recycles) {
-      const float slack = setting.never_recompute
-                              ? 1.0f
-                              : recycle_slack(setting, *manifold, p, b_in_a, memory, margin);
-      recycling->remember(b_in_a, slack, setting.epoch);
-    }
-    return Answer::Plugin;
-  }
-  count.fallbacks.add();
-  return Answer::Box2DTriangles;
+  ThreadCounters& count = counters();
+  count.triangle_pairs[static_cast<int>(*setting.backend)].add();
+  count.skipped[static_cast<int>(*skip)].add();
+}
+
+// True for a pair whose shapes were looked at and found to be triangles (valid or not).
+inline bool triangle_shapes(const ContactMemory& memory) {
+  return memory.shapes == ContactMemory::Shapes::Triangles ||
+         memory.shapes == ContactMemory::Shapes::InvalidTriangles;
 }
 
 // The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
 // uncounted, exactly as Box2D's own contact); `memory` is the pair's state, updated; `contact`
 // the world's contact it belongs to, if any, and `recycling` its kept manifold's pose (both
-// nullptr for `collide_polygons`).
+// nullptr for `collide_polygons`). All three steps, in one function.
 inline void evaluate(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                      ContactMemory& memory, const TriangleContact* contact = nullptr,
                      ManifoldRecycling* recycling = nullptr) {
-  const Answer answer = setting.backend
-                            ? plug_in_answer(manifold, setting, pair, memory, contact, recycling)
-                            : Answer::Box2DOther;
-  if (answer == Answer::Plugin) return;
+  if (setting.backend) {
+    if (memory.shapes == ContactMemory::Shapes::Unchecked) look_at_shapes(pair.a, pair.b, memory);
+    if (triangle_shapes(memory)) {
+      if (recycling && kept(*manifold, setting, pair, memory, *recycling, contact)) return;
+      skip_or_answer(manifold, setting, pair, memory, recycling, [&](const b2Transform& b_in_a) {
+        answer_afresh(manifold, setting, pair, b_in_a, memory, contact, recycling);
+      });
+      return;
+    }
+    counters().polygon_pairs.add();
+  }
   b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
-  if (answer == Answer::Box2DTriangles && manifold->pointCount > 0) counters().manifolds.add();
 }
 
 }  // namespace dyop::box2d::detail

@@ -37,25 +37,28 @@ constexpr float recycle_cosine = 0.98f;
 // What a world's contact remembers of the manifold it keeps: 24 bytes.
 struct ManifoldRecycling {
   b2Rot q;                 // B's body frame in A's when the manifold was computed: rotation
-  b2Vec2 p{0, 0};          // ... and translation (b2MulT(xf_a, xf_b))
+  b2Vec2 centroid{0, 0};   // ... and B's centroid then, in A's frame (b2MulT(xf_a, xf_b) applied)
   float slack = 0;         // how far (motion, metres) the pose may move before a recompute; 0: never
   std::uint8_t epoch = 0;  // the install the manifold was computed under (`Setting::epoch`)
 
   // Nothing to keep: the next evaluation computes.
   void forget() { slack = 0; }
 
-  // Remembers the pose `b_in_a` of a manifold just computed under install `epoch`, which may be
-  // kept while it moves less than `slack` (≤ 0: never).
-  void remember(const b2Transform& b_in_a, float keep_within, std::uint8_t install_epoch) {
+  // Remembers the pose `b_in_a` (B's centroid in its body frame: `centroid_b`) of a manifold just
+  // computed under install `epoch`, which may be kept while it moves less than `slack` (≤ 0:
+  // never). The centroid is kept placed, not the translation: the test then places it once.
+  void remember(const b2Transform& b_in_a, const b2Vec2& centroid_b, float keep_within,
+                std::uint8_t install_epoch) {
     q = b_in_a.q;
-    p = b_in_a.p;
+    centroid = b2Mul(b_in_a, centroid_b);
     slack = keep_within;
     epoch = install_epoch;
   }
 
   // True when the manifold computed at the remembered pose may be kept at `b_in_a`: computed
   // under this install, the turn within `recycle_cosine`, and the motion (see the file's head)
-  // below the slack. `centroid_b`: B's centroid in its body frame; `lever`: see the file's head.
+  // below the slack. `centroid_b`: B's centroid in its body frame, as remembered; `lever`: see the
+  // file's head.
   bool keeps(const b2Transform& b_in_a, const b2Vec2& centroid_b, float lever,
              std::uint8_t install_epoch) const {
     if (!(slack > 0) || epoch != install_epoch) return false;
@@ -64,8 +67,7 @@ struct ManifoldRecycling {
     const float sin_turn = q.c * b_in_a.q.s - q.s * b_in_a.q.c;
     const float room = slack - std::abs(sin_turn) * lever;
     if (!(room > 0)) return false;
-    const b2Vec2 moved = b2Mul(b_in_a.q, centroid_b) + b_in_a.p - (b2Mul(q, centroid_b) + p);
-    return moved.LengthSquared() < room * room;
+    return (b2Mul(b_in_a, centroid_b) - centroid).LengthSquared() < room * room;
   }
 };
 

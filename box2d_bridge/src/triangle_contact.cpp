@@ -167,12 +167,55 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
 TriangleContact::TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b)
     : b2Contact(fixture_a, 0, fixture_b, 0) {}
 
+// The evaluation's steps (see evaluation.hpp) as paths of their own, each reached by a jump:
+// `Evaluate` itself saves nothing and reads one field; a kept manifold (`keep_or_evaluate`) and a
+// skip (`evaluate_in_full`) pay none of the register saves of the method's run (`answer_afresh`),
+// nor a first look at the shapes or an uninstalled plug-in (`evaluate_in_general`). Callgrind,
+// 150 steps, Collide instructions against all in one function: pyramid 40.9 M → 38.2 M, rain
+// 190.9 M → 185.9 M. A kept manifold alone out of line, the skip inline with the rest, saved the
+// pyramid 3 % and cost the rain 1.6 %.
 void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
                                const b2Transform& xf_b) {
+  if (recycling_.slack > 0) return keep_or_evaluate(manifold, xf_a, xf_b);
+  evaluate_in_full(manifold, xf_a, xf_b);
+}
+
+PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf_b) const {
   // The registry dispatches only polygon–polygon pairs here.
-  const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
-  const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
-  evaluate(manifold, installation().setting, {a, xf_a, b, xf_b}, memory_, this, &recycling_);
+  return {*static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
+          *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
+}
+
+[[gnu::noinline]] void TriangleContact::keep_or_evaluate(b2Manifold* manifold,
+                                                         const b2Transform& xf_a,
+                                                         const b2Transform& xf_b) {
+  if (kept(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this)) return;
+  evaluate_in_full(manifold, xf_a, xf_b);
+}
+
+[[gnu::noinline]] void TriangleContact::evaluate_in_full(b2Manifold* manifold,
+                                                         const b2Transform& xf_a,
+                                                         const b2Transform& xf_b) {
+  const Setting& setting = installation().setting;
+  if (!setting.backend || !triangle_shapes(memory_)) {
+    return evaluate_in_general(manifold, xf_a, xf_b);
+  }
+  skip_or_answer(manifold, setting, pair(xf_a, xf_b), memory_, &recycling_,
+                 [&](const b2Transform& b_in_a) { answer_afresh(manifold, xf_a, xf_b, b_in_a); });
+}
+
+[[gnu::noinline]] void TriangleContact::answer_afresh(b2Manifold* manifold,
+                                                      const b2Transform& xf_a,
+                                                      const b2Transform& xf_b,
+                                                      b2Transform b_in_a) {
+  detail::answer_afresh(manifold, installation().setting, pair(xf_a, xf_b), b_in_a, memory_, this,
+                        &recycling_);
+}
+
+[[gnu::noinline]] void TriangleContact::evaluate_in_general(b2Manifold* manifold,
+                                                            const b2Transform& xf_a,
+                                                            const b2Transform& xf_b) {
+  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &recycling_);
 }
 
 void TriangleContact::evaluate_afresh(b2Manifold* manifold) const {

@@ -14,15 +14,20 @@
 
 namespace dyop::box2d::detail {
 
+struct PolygonPair;  // evaluation.hpp
+
 // `h` with `body`'s frame folded in when it is static (its type too: a body made static or not
 // folds differently); a moving body's frame is not part of any mask.
+// Two 64-bit words and one multiplication per word (a multiplicative hash, Knuth's constant
+// widened): every keep of a pair with a static body pays it.
 inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   if (body.GetType() != b2_staticBody) return h;
-  std::uint32_t words[4];
+  std::uint64_t words[2];
   static_assert(sizeof(b2Transform) == sizeof words, "b2Transform is four floats");
   std::memcpy(words, &body.GetTransform(), sizeof words);
-  for (const std::uint32_t w : words) h = (h ^ w) * 0x9E3779B1u;  // Knuth's multiplicative hash
-  return h;
+  std::uint64_t x = h;
+  for (const std::uint64_t w : words) x = (x ^ w) * 0x9E3779B97F4A7C15u;
+  return static_cast<std::uint32_t>(x >> 32);
 }
 
 // Box2D's contact for a polygon pair made while the plug-in is installed: `Evaluate` is the
@@ -86,6 +91,19 @@ class TriangleContact final : public b2Contact {
 
  private:
   TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);
+
+  // Its two shapes with the bodies' transforms.
+  PolygonPair pair(const b2Transform& xf_a, const b2Transform& xf_b) const;
+
+  // `Evaluate`'s paths (see there): a kept manifold, else the rest; the rest, nothing kept (a
+  // skip, else the answer afresh); the answer afresh (`b_in_a`: B's body frame given in A's);
+  // the whole of `evaluate` (uninstalled, shapes not yet looked at, or larger polygons).
+  void keep_or_evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
+  void evaluate_in_full(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
+  void answer_afresh(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b,
+                     b2Transform b_in_a);
+  void evaluate_in_general(b2Manifold* manifold, const b2Transform& xf_a,
+                           const b2Transform& xf_b);
 
   ContactMemory memory_;
   ManifoldRecycling recycling_;

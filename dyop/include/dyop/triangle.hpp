@@ -73,6 +73,11 @@ class Triangle {
  public:
   /// Validates `p0, p1, p2` (world coordinates, any winding). Never asserts, never fixes input.
   static TriangleOrError<T> make(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2);
+  /// What `make` would find wrong with `p0, p1, p2` (`None`: it would accept them), without
+  /// building the triangle: no square root, no division. For a caller that validates data once
+  /// and places it later with `from_validated` (the Box2D plug-in, on a contact's first
+  /// evaluation).
+  static TriangleError check(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2);
 
   /// A triangle from data validated before, placed by the rigid motion x ↦ R·x + translation (R
   /// as in `moved`): `ccw` are three vertices that `make` accepted, counter-clockwise, and
