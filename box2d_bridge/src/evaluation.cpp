@@ -48,7 +48,7 @@ InternalEdges masks_for(const Setting& setting, ContactMemory& memory,
   if (contact) {
     const std::uint16_t stamp = contact->internal_edges_stamp(setting.epoch);
     if (memory.internal_edges_stamp != stamp) {
-      memory.internal_edges = contact->find_internal_edges(stamp);
+      memory.internal_edges = contact->find_internal_edges(stamp, setting.epoch);
       memory.internal_edges_stamp = stamp;
     }
   }

@@ -138,7 +138,8 @@ bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
           m_fixtureB->GetBody()->GetType() == b2_staticBody);
 }
 
-InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
+InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp,
+                                                   std::uint8_t epoch) const {
   // Found before under another stamp, with a static body: its static neighbours may have moved,
   // and the pair's other static contacts may not see it in their own stamps.
   if (memory_.internal_edges_stamp != 0 &&
@@ -160,8 +161,29 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp) const {
     if (!b && c.m_fixtureB == m_fixtureB) b = half(m, true);
     return !(a && b);
   });
+  if (!a) a = half_from_body(*m_fixtureA, epoch);
+  if (!b) b = half_from_body(*m_fixtureB, epoch);
   return InternalEdges::pair(a ? *a : triangle_internal_edges(*m_fixtureA),
                              b ? *b : triangle_internal_edges(*m_fixtureB));
+}
+
+std::optional<InternalEdges> TriangleContact::half_from_body(const b2Fixture& fixture,
+                                                             std::uint8_t epoch) const {
+  const b2Body& body = *fixture.GetBody();
+  // Alone on its body, its triangle has no internal edge: `triangle_internal_edges` says so at
+  // once.
+  const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
+  if (alone || body.GetType() == b2_staticBody) return std::nullopt;
+  for (const b2ContactEdge* e = body.GetContactList(); e; e = e->next) {
+    const TriangleContact* c = ours(e->contact);
+    if (!c || c == this) continue;
+    const bool as_a = c->m_fixtureA == &fixture;
+    if (!as_a && c->m_fixtureB != &fixture) continue;
+    if (const std::optional<InternalEdges> m = c->current_internal_edges(epoch)) {
+      return half(*m, !as_a);
+    }
+  }
+  return std::nullopt;
 }
 
 TriangleContact::TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b)
@@ -247,6 +269,12 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
                     fa->GetBody()->GetTransform(),
                     static_cast<const b2PolygonShape*>(fb->GetShape()),
                     fb->GetBody()->GetTransform());
+}
+
+std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
+  const auto* ours = detail::TriangleContact::ours(const_cast<b2Contact*>(&contact));
+  if (!ours) return std::nullopt;
+  return ours->current_internal_edges(detail::installation().setting.epoch);
 }
 
 void forget_internal_edges(b2World& world) {

@@ -8,6 +8,7 @@
 #include <box2d/b2_world.h>
 
 #include <cstring>
+#include <optional>
 
 #include "dyop/box2d.hpp"
 #include "recycling.hpp"
@@ -69,18 +70,29 @@ class TriangleContact final : public b2Contact {
     return stamp != 0 ? stamp : 1;
   }
 
-  // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp`: each
-  // triangle's half taken from another contact between the same two bodies that has the same
-  // fixture and masks found under `stamp`, else found from the fixture's edge group
-  // (`triangle_internal_edges`). A box on a ground finds a ground triangle's masks once for all
-  // its fixtures touching it. Masks found again under a new stamp with a static body in the pair
-  // mean its static neighbourhood changed: the pair's other contacts with static bodies find
-  // theirs again too (see `static_neighbourhood_changed` in the .cpp).
-  InternalEdges find_internal_edges(std::uint16_t stamp) const;
+  // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp` (install
+  // `epoch`): each triangle's half taken from another contact between the same two bodies that
+  // has the same fixture and masks found under `stamp`; for a non-static body's triangle, else
+  // from any contact of its body with that fixture whose masks still hold (`half_from_body`);
+  // else found from the fixture's edge group (`triangle_internal_edges`). A box on a ground finds
+  // a ground triangle's masks once for all its fixtures touching it, and a body in a pile finds
+  // each of its triangles' masks once for all the bodies it touches. Masks found again under a
+  // new stamp with a static body in the pair mean its static neighbourhood changed: the pair's
+  // other contacts with static bodies find theirs again too (see `static_neighbourhood_changed`
+  // in the .cpp).
+  InternalEdges find_internal_edges(std::uint16_t stamp, std::uint8_t epoch) const;
 
   // The manifold it would compute now with nothing kept (`measurement::evaluate_afresh`), its
   // state unchanged.
   void evaluate_afresh(b2Manifold* manifold) const;
+
+  // Its masks when they hold under install `epoch` as the world is now (found under the stamp it
+  // would have now), else nothing.
+  std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
+    const std::uint16_t found = memory_.internal_edges_stamp;
+    if (found == 0 || found != internal_edges_stamp(epoch)) return std::nullopt;
+    return memory_.internal_edges;
+  }
 
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
   void forget_internal_edges() { memory_.internal_edges_stamp = 0; }
@@ -91,6 +103,13 @@ class TriangleContact final : public b2Contact {
 
  private:
   TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);
+
+  // The masks of `fixture`'s triangle (one of its two), bits 0..2, from another contact of its
+  // body with the same fixture whose masks were found under the stamp that contact would have
+  // now, or nothing. Only for a non-static body: its triangles share edges with its own
+  // triangles alone, so their masks do not depend on the other body of a contact, and its
+  // contact list is short (a static body's spans the world).
+  std::optional<InternalEdges> half_from_body(const b2Fixture& fixture, std::uint8_t epoch) const;
 
   // Its two shapes with the bodies' transforms.
   PolygonPair pair(const b2Transform& xf_a, const b2Transform& xf_b) const;

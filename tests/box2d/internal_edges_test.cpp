@@ -10,8 +10,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
+#include "dyop/box2d_internal_edges.hpp"
 #include "scene.hpp"
 
 namespace dyop::box2d::testing {
@@ -261,6 +263,41 @@ TEST(InternalEdges, ContactsFollowANeighbourDestroyedAndCreatedFarFromThem) {
   add_triangle(ground, f_points[0], f_points[1], f_points[2]);
   EXPECT_GT(rule_pairs_over(10), 0u);
   EXPECT_NEAR(body->GetPosition().y, 0.0f, kSinkAllowed);
+  ASSERT_TRUE(uninstall().ok());
+}
+
+// A pile of concave bodies (U, L and star shapes of 4 to 10 triangle fixtures) dropped into a bin
+// of triangles: a body's contacts lend each other its triangles' masks as it meets new bodies.
+// After every step, every contact's masks are those of its two fixtures found afresh.
+TEST(InternalEdges, MasksLentBetweenContactsOfABodyAreTheMasksFoundAfresh) {
+  ASSERT_TRUE(install(Backend::Dyop, rule_on()).ok());
+  World world;
+  scenes::add_triangle_bin(world, 7.0f, 12.0f);
+  for (int i = 0; i < 12; ++i) {  // 4 columns, 3 rows, 3.5 m apart: none overlaps another
+    const float column = static_cast<float>(i % 4);
+    const float row = static_cast<float>(i / 4);
+    const b2Vec2 at(-5.25f + 3.5f * column, 2.5f + 3.5f * row);
+    const float angle = 0.3f * static_cast<float>(i);
+    if (i % 3 == 0) scenes::add_u_shape(world, at, angle);
+    if (i % 3 == 1) scenes::add_l_shape(world, at, angle);
+    if (i % 3 == 2) scenes::add_star(world, at, angle);
+  }
+  int checked = 0;
+  int with_internal_edges = 0;
+  for (int step = 0; step < 240; ++step) {
+    world.step();
+    for (const b2Contact* c = world->GetContactList(); c; c = c->GetNext()) {
+      const std::optional<InternalEdges> held = contact_internal_edges(*c);
+      if (!held) continue;
+      const InternalEdges afresh = InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
+                                                       triangle_internal_edges(*c->GetFixtureB()));
+      ASSERT_EQ(*held, afresh) << "step " << step;
+      ++checked;
+      with_internal_edges += held->any();
+    }
+  }
+  EXPECT_GT(checked, 1000);
+  EXPECT_GT(with_internal_edges, 100);  // the piled bodies' own edges, not only the bin's
   ASSERT_TRUE(uninstall().ok());
 }
 

@@ -7,6 +7,8 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 
+#include <optional>
+
 #include "dyop/result.hpp"
 
 namespace dyop::box2d {
@@ -34,5 +36,12 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 /// moved or made static or not near a body (through that body's contact with it), and contacts
 /// made or ended between steps (see `Config::internal_edges`). Call between steps.
 void forget_internal_edges(b2World& world);
+
+/// The masks `contact` holds for its pair (`Query::internal_edges`: A's bits, then B's), when it
+/// found them, or was lent them by another contact, under the world as it is now (the same
+/// install, fixtures and static frames); nothing otherwise, and for a contact the plug-in did not
+/// make. What the masks the rule applies are, for tests and for drawing: they equal
+/// `InternalEdges::pair` of the two fixtures' `triangle_internal_edges`.
+std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact);
 
 }  // namespace dyop::box2d
