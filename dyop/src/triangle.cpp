@@ -21,28 +21,6 @@ const char* describe(TriangleError e) {
 }
 
 template <class T>
-TriangleError Triangle<T>::check(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2) {
-  if (!p0.allFinite() || !p1.allFinite() || !p2.allFinite()) return TriangleError::NonFinite;
-  const T limit = max_coordinate<T>();
-  if (p0.cwiseAbs().maxCoeff() > limit || p1.cwiseAbs().maxCoeff() > limit ||
-      p2.cwiseAbs().maxCoeff() > limit) {
-    return TriangleError::TooLarge;
-  }
-  if (p0 == p1 || p1 == p2 || p2 == p0) return TriangleError::RepeatedVertex;
-  // Edges are differences of the inputs, so the test is invariant under translation.
-  const Vec2<T> e01 = p1 - p0;
-  const Vec2<T> e12 = p2 - p1;
-  const Vec2<T> e20 = p0 - p2;
-  const T longest_sq = std::max({e01.squaredNorm(), e12.squaredNorm(), e20.squaredNorm()});
-  if (!(longest_sq >= min_size<T>() * min_size<T>())) return TriangleError::TooSmall;
-  const T twice_area = cross(e01, Vec2<T>(p2 - p0));
-  if (!(std::abs(twice_area) > degenerate_tolerance<T>() * longest_sq)) {
-    return TriangleError::Degenerate;
-  }
-  return TriangleError::None;
-}
-
-template <class T>
 TriangleOrError<T> Triangle<T>::make(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2) {
   TriangleOrError<T> out;
   out.error = check(p0, p1, p2);

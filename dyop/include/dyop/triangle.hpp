@@ -131,6 +131,33 @@ class Triangle {
   bool flipped_ = false;
 };
 
+// Inline, scalar by scalar: the Box2D plug-in checks two triangles on every contact's first
+// evaluation, and a tall rain makes 45,000 contacts in 150 steps.
+template <class T>
+inline TriangleError Triangle<T>::check(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2) {
+  const T coordinates[6] = {p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y()};
+  bool finite = true;
+  T largest = 0;
+  for (const T x : coordinates) {
+    finite = finite && std::isfinite(x);
+    largest = std::max(largest, std::abs(x));
+  }
+  if (!finite) return TriangleError::NonFinite;
+  if (largest > max_coordinate<T>()) return TriangleError::TooLarge;
+  if (p0 == p1 || p1 == p2 || p2 == p0) return TriangleError::RepeatedVertex;
+  // Edges are differences of the inputs, so the test is invariant under translation.
+  const Vec2<T> e01 = p1 - p0;
+  const Vec2<T> e12 = p2 - p1;
+  const Vec2<T> e20 = p0 - p2;
+  const T longest_sq = std::max({e01.squaredNorm(), e12.squaredNorm(), e20.squaredNorm()});
+  if (!(longest_sq >= min_size<T>() * min_size<T>())) return TriangleError::TooSmall;
+  const T twice_area = cross(e01, Vec2<T>(p2 - p0));
+  if (!(std::abs(twice_area) > degenerate_tolerance<T>() * longest_sq)) {
+    return TriangleError::Degenerate;
+  }
+  return TriangleError::None;
+}
+
 template <class T>
 inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw,
                                               const std::array<Vec2<T>, 3>& normals, T c, T s,
