@@ -18,9 +18,9 @@ namespace dyop::box2d::detail {
 struct PolygonPair;  // evaluation.hpp
 
 // `h` with `body`'s frame folded in when it is static (its type too: a body made static or not
-// folds differently); a moving body's frame is not part of any mask.
-// Two 64-bit words and one multiplication per word (a multiplicative hash, Knuth's constant
-// widened): every keep of a pair with a static body pays it.
+// folds differently); a moving body's frame is not part of any mask. The frame as two 64-bit
+// words, one multiplication each (Knuth's multiplicative hash, its constant widened to 64 bits):
+// every kept manifold of a pair with a static body pays it.
 inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   if (body.GetType() != b2_staticBody) return h;
   std::uint64_t words[2];
