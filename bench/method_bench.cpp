@@ -59,10 +59,12 @@ const char* precision_name() {
   return std::is_same_v<T, float> ? "float" : "double";
 }
 
+// `witnesses`: `Query::witnesses` (false only at Level::Manifold, for the manifold alone).
 template <class T>
-void bm_method(benchmark::State& state, Method m, InputClass c, Level l) {
+void bm_method(benchmark::State& state, Method m, InputClass c, Level l, bool witnesses) {
   const PairSet<T>& s = pairs_of<T>(c);
-  const Query<T> q{l};
+  Query<T> q{l};
+  q.witnesses = witnesses;
   std::size_t i = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(penetrate(m, s.a[i], s.b[i], q));
@@ -198,10 +200,16 @@ void register_method(const MethodInfo& row) {
       switch (row.entry) {
         case Entry::PerPair:
           benchmark::RegisterBenchmark(bm(variant_name(row.method, false)).c_str(), bm_method<T>,
-                                       row.method, c, l);
+                                       row.method, c, l, true);
           if (row.warm_start()) {
             benchmark::RegisterBenchmark(bm(variant_name(row.method, true)).c_str(), bm_warm<T>,
                                          row.method, c, l);
+          }
+          if (l == Level::Manifold && row.manifold_only()) {
+            // The manifold alone (`Query::witnesses` false): what b2CollidePolygons computes.
+            const std::string only = "BM_" + std::string(row.name) + "/" + workloads::name(c) +
+                                     "/manifold-only/" + precision_name<T>();
+            benchmark::RegisterBenchmark(only.c_str(), bm_method<T>, row.method, c, l, false);
           }
           break;
         case Entry::Batch:

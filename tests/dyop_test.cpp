@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "dyop/dyop.hpp"
+#include "dyop/method.hpp"
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/input_classes.hpp"
@@ -92,6 +93,73 @@ TEST(Dyop, GapForPairsApartIsALowerBoundOnTheDistanceAndChangesNothingElse) {
     }
   }
   EXPECT_GT(apart, 100) << "the classes hold pairs apart";
+}
+
+// Every field of a manifold query but the Contact level's, bit for bit (the manifold whole).
+template <class T>
+void expect_same_but_witnesses(const Result<T>& bare, const Result<T>& full) {
+  EXPECT_EQ(bare.status, full.status);
+  EXPECT_EQ(bare.separation, full.separation);
+  EXPECT_EQ(bare.depth, full.depth);
+  EXPECT_EQ(bare.normal, full.normal);
+  const Manifold<T>& b = bare.manifold;
+  const Manifold<T>& f = full.manifold;
+  EXPECT_EQ(b.reference_is_a, f.reference_is_a);
+  EXPECT_EQ(b.reference_edge, f.reference_edge);
+  EXPECT_EQ(b.incident_edge, f.incident_edge);
+  EXPECT_EQ(b.normal, f.normal);
+  ASSERT_EQ(b.point_count, f.point_count);
+  for (int i = 0; i < b.point_count; ++i) {
+    EXPECT_EQ(b.points[i].point, f.points[i].point);
+    EXPECT_EQ(b.points[i].separation, f.points[i].separation);
+    EXPECT_EQ(b.points[i].key, f.points[i].key);
+  }
+  EXPECT_EQ(bare.witness_a, Vec2<T>::Zero());
+  EXPECT_EQ(bare.witness_b, Vec2<T>::Zero());
+  EXPECT_EQ(bare.feature_a.type, Feature::Type::None);
+  EXPECT_EQ(bare.feature_b.type, Feature::Type::None);
+}
+
+// A manifold without witnesses (`Query::witnesses` false, as the Box2D plug-in asks) is the
+// manifold with them, and the same status, depth and normal: only the Contact level's fields are
+// left out. Every method of the registry that claims it (`MethodInfo::manifold_only`), over every
+// class, both precisions, both answers for pairs apart and with internal-edge masks, which take
+// the rule's own path.
+TEST(Dyop, ManifoldWithoutWitnessesIsTheManifoldWithThemBitForBit) {
+  int with_points = 0;
+  int methods = 0;
+  const InternalEdges masks[] = {{}, {0b000101, 0b000010}, {0b111000, 0b000111}};
+  for (const MethodInfo& row : method_table) {
+    if (!row.manifold_only()) continue;
+    ++methods;
+    for (InputClass c : test_classes) {
+      for (const RawPair& p : make_valid_pairs(c, 200, 23)) {
+        const auto d = build<double>(p);
+        const auto f = build<float>(p);
+        for (Apart apart : {Apart::Distance, Apart::Gap}) {
+          for (const InternalEdges& m : masks) {
+            const Query<double> q{Level::Manifold, 0.05 * pair_size(p), 0.01 * pair_size(p), apart,
+                                  m};
+            Query<double> bare = q;
+            bare.witnesses = false;
+            const Result<double> full = penetrate(row.method, d.a.triangle, d.b.triangle, q);
+            expect_same_but_witnesses(penetrate(row.method, d.a.triangle, d.b.triangle, bare),
+                                      full);
+            with_points += full.manifold.point_count > 0;
+            if (!f.a.ok() || !f.b.ok()) continue;
+            const Query<float> qf{Level::Manifold, float(q.margin), float(q.face_hysteresis),
+                                  apart, m};
+            Query<float> bare_f = qf;
+            bare_f.witnesses = false;
+            expect_same_but_witnesses(penetrate(row.method, f.a.triangle, f.b.triangle, bare_f),
+                                      penetrate(row.method, f.a.triangle, f.b.triangle, qf));
+          }
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(info(Method::Dyop).manifold_only() && info(Method::Sat).manifold_only());
+  EXPECT_GT(with_points, 1000 * methods) << "the classes hold touching and penetrating pairs";
 }
 
 TEST(DyopFast, FindsAVertexIntoFaceDepthLikeThePaper) {

@@ -77,6 +77,7 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's
   query.face_hysteresis = face_hysteresis;
   query.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
+  query.witnesses = false;   // Box2D's solver reads the manifold alone
   PairState cold;
   const Result<float> r = penetrate(*setting.method, placed(pair.a), placed(pair.b, b_in_a), query,
                                     setting.config.lin_canny_cache ? &memory.warm_start : &cold);

@@ -89,6 +89,8 @@ inline constexpr std::uint8_t warm_start = 1u << 1;     ///< keeps state between
 /// equations (the engine plug-in offers these as its backends)
 inline constexpr std::uint8_t simulation = 1u << 2;
 inline constexpr std::uint8_t internal_edges = 1u << 3;  ///< honours `Query::internal_edges`
+/// honours `Query::witnesses` (false: a manifold without the Contact level's fields)
+inline constexpr std::uint8_t manifold_only = 1u << 4;
 }  // namespace trait
 
 /// One row of the registry.
@@ -118,6 +120,9 @@ struct MethodInfo {
   /// Honours `Query::internal_edges` (the exact `dyop` and `sat`); the others answer as if every
   /// axis were allowed.
   constexpr bool internal_edges() const { return (traits & trait::internal_edges) != 0; }
+  /// Honours `Query::witnesses` (the exact `dyop` and `sat`): a manifold asked for without
+  /// witnesses costs less. The others fill the Contact level's fields anyway.
+  constexpr bool manifold_only() const { return (traits & trait::manifold_only) != 0; }
 
   /// True when it answers queries at `level`.
   constexpr bool has(Level level) const { return (levels & level_bit(level)) != 0; }
@@ -159,7 +164,8 @@ Result<T> lin_canny_warm(const Triangle<T>& a, const Triangle<T>& b, const Query
 inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::simulation | trait::internal_edges,
+     all_level_bits, trait::runs_double | trait::simulation | trait::internal_edges |
+         trait::manifold_only,
      Accuracy::Exact, &detail::stateless<float, &dyop<float>>,
      &detail::stateless<double, &dyop<double>>},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
@@ -177,7 +183,8 @@ inline constexpr MethodInfo method_table[method_count] = {
     {Method::Sat, "sat", nullptr, nullptr,
      "minimum overlap over the six Minkowski-difference axes: the exact reference",
      Entry::PerPair, all_level_bits,
-     trait::runs_double | trait::simulation | trait::internal_edges, Accuracy::Exact,
+     trait::runs_double | trait::simulation | trait::internal_edges |
+         trait::manifold_only, Accuracy::Exact,
      &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
      all_level_bits, trait::runs_double | trait::simulation, Accuracy::ToTolerance,

@@ -128,6 +128,12 @@ struct Query {
   /// no edge of the other (held whole by it): allowed axes suffice. Empty (the default): every
   /// axis allowed, the plain answer, bit for bit.
   InternalEdges internal_edges{};
+  /// Level::Manifold only: false leaves the Contact level's fields (`witness_a`, `witness_b`,
+  /// `feature_a`, `feature_b`) at their defaults, for a caller that wants the manifold as Box2D's
+  /// `b2CollidePolygons` gives it and nothing else (the Box2D plug-in). The status, the Depth
+  /// level's fields and the manifold are the same either way, bit for bit. Honoured by the exact
+  /// methods (`dyop`, `sat`); the others fill the fields anyway.
+  bool witnesses = true;
 };
 
 /// A vertex or an edge of one triangle, by caller's index.

@@ -21,6 +21,7 @@ template <class T, class Find>
                                                   const std::array<T, 6>& overlap,
                                                   int least, const Find& find, Result<T>& r) {
   const T band = touching_band(f);
+  const Level level = fields_level(q);
   r.status = status_of_overlap(overlap[least], band);
   // A least overlap inside the band proves only that the pair does not overlap by more than the
   // band: a gap along an edge normal can be far less than the distance (two slivers end to end),
@@ -30,11 +31,11 @@ template <class T, class Find>
   const bool gap_in_band = r.status == Status::Touching;
   const Closest<T> near = gap_in_band ? find(f) : Closest<T>{};
   if (gap_in_band && near.distance > band) {
-    fill_closest(f, q.level, near, r);
+    fill_closest(f, level, near, r);
   } else if (r.status == Status::Separated && q.apart == Apart::Gap) {
-    fill_gap(f, q.level, AxisOverlap<T>{least, overlap[least], 0}, r);
+    fill_gap(f, level, AxisOverlap<T>{least, overlap[least], 0}, r);
   } else if (r.status == Status::Separated) {
-    fill_separated(f, q.level, r, find);
+    fill_separated(f, level, r, find);
   } else {
     return false;
   }
@@ -49,8 +50,8 @@ template <class T>
   if (level >= Level::Contact) {
     // The same arithmetic again on one axis, now keeping the deep vertex.
     fill_from_axis(f, level, overlap_on_axis(f, axis), r);
-  } else {
-    fill_from_axis(f, level, AxisOverlap<T>{axis, overlap[axis], 0}, r);
+  } else if (level == Level::Depth) {
+    fill_depth_from_axis(f, AxisOverlap<T>{axis, overlap[axis], 0}, r);
   }
 }
 
@@ -64,7 +65,7 @@ template <class T, class Find>
   Result<T> r;
   if (!answer_if_apart(f, q, overlap, allowed.least, find, r)) {
     const int axis = allowed.any() ? allowed.least_usable_axis() : allowed.least;
-    answer_on_axis(f, q.level, overlap, axis, r);
+    answer_on_axis(f, fields_level(q), overlap, axis, r);
   }
   if (q.level != Level::Manifold) return r;
   // No usable axis: no contact from this pair (another pair of the two bodies carries it), and
@@ -105,7 +106,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
     return r;
   }
   if (!answer_if_apart(f, q, overlap, least, find, r)) {
-    answer_on_axis(f, q.level, overlap, least, r);
+    answer_on_axis(f, fields_level(q), overlap, least, r);
   }
   fill_manifold(f, q, reference, r);
   return r;

@@ -15,6 +15,13 @@ inline T touching_band(const PairFrame<T>& f) {
   return touching_tolerance<T>() * f.scale;
 }
 
+// The level whose fields a query fills besides the manifold: a manifold without witnesses
+// (`Query::witnesses` false) fills only the Depth level's (the manifold is filled on its own).
+template <class T>
+inline Level fields_level(const Query<T>& q) {
+  return q.level == Level::Manifold && !q.witnesses ? Level::Depth : q.level;
+}
+
 // Status of a signed overlap (positive: penetrating) against the touching band: counted, not
 // branched on (which status a random pair has is not predictable).
 template <class T>
@@ -33,15 +40,23 @@ inline Feature input_feature(const Triangle<T>& t, Feature f) {
   return f;
 }
 
-// A touching or penetrating pair answered by axis `ax` (its overlap is the depth).
+// The Depth level's fields of a touching or penetrating pair answered by axis `ax` (its overlap
+// is the depth). Always inlined: a call cost the Depth query of `dyop` and `sat` about 1 ns.
+template <class T>
+[[gnu::always_inline]] inline void fill_depth_from_axis(const PairFrame<T>& f,
+                                                        const AxisOverlap<T>& ax, Result<T>& r) {
+  r.separation = -ax.overlap;
+  r.depth = ax.overlap > 0 ? ax.overlap : T(0);
+  r.normal = f.axis(ax.axis);
+}
+
+// A touching or penetrating pair answered by axis `ax`: the fields of `level`.
 template <class T>
 void fill_from_axis(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax, Result<T>& r) {
   if (level == Level::Overlap) return;
-  const Vec2<T> u = f.axis(ax.axis);
-  r.separation = -ax.overlap;
-  r.depth = ax.overlap > 0 ? ax.overlap : T(0);
-  r.normal = u;
+  fill_depth_from_axis(f, ax, r);
   if (level == Level::Depth) return;
+  const Vec2<T> u = r.normal;
   if (ax.axis < 3) {  // A's face, B's deepest vertex
     const Vec2<T>& deep = f.b[ax.deep];
     r.witness_b = deep + f.origin;
