@@ -62,10 +62,14 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
     memory.shapes = ContactMemory::Shapes::Polygons;
     return;
   }
+  memory.shapes = ContactMemory::Shapes::UnvalidatedTriangles;
+  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
+}
+
+void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory) {
   memory.shapes = valid_triangle(a) && valid_triangle(b)
                       ? ContactMemory::Shapes::Triangles
                       : ContactMemory::Shapes::InvalidTriangles;
-  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
 }
 
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,

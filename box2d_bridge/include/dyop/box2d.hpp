@@ -274,6 +274,10 @@ struct ContactMemory {
     Unchecked,         ///< not evaluated yet
     Triangles,         ///< two triangles accepted by `Triangle<float>::make`: the backend answers
     InvalidTriangles,  ///< two triangles, one rejected by `Triangle<float>::make`: Box2D answers
+    /// Two triangles not validated yet: the skips answer them (they need only the shapes'
+    /// centroids, radii and normals); the first evaluation that runs the backend validates them
+    /// (then `Triangles` or `InvalidTriangles`). Most contacts of a rain never get that far.
+    UnvalidatedTriangles,
     Polygons,          ///< a side with more than 3 vertices: `b2CollidePolygons` answers
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
@@ -282,8 +286,9 @@ struct ContactMemory {
   /// (`Config::warm_axis`).
   std::int8_t last_face = -1;
   Shapes shapes = Shapes::Unchecked;  ///< set by the first evaluation
-  /// `Shapes::Triangles`: the sum, over the two shapes, of the distance from the shape's centroid
-  /// (`m_centroid`) to its farthest vertex, metres, body frame (`Config::bounds_early_out`).
+  /// Triangles (validated or not): the sum, over the two shapes, of the distance from the
+  /// shape's centroid (`m_centroid`) to its farthest vertex, metres, body frame
+  /// (`Config::bounds_early_out`).
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits,
   /// then B's), used while the installed backend applies the rule (`Config::internal_edges`). A
