@@ -209,8 +209,7 @@ template <class Afresh>
     recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
   }
   ThreadCounters& count = counters();
-  count.triangle_pairs[static_cast<int>(*setting.backend)].add();
-  count.skipped[static_cast<int>(*skip)].add();
+  count.skipped[static_cast<int>(*setting.backend)][static_cast<int>(*skip)].add();
 }
 
 // True for a pair whose shapes were looked at and found to be triangles (valid, invalid or not

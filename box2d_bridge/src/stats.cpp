@@ -10,11 +10,17 @@ namespace {
 
 // Adds `from`'s counts to `to`.
 void add_to(Stats& to, const ThreadCounters& from) {
-  for (int m = 0; m < backend_count; ++m) to.triangle_pairs[m] += from.triangle_pairs[m].get();
+  for (int m = 0; m < backend_count; ++m) {
+    to.triangle_pairs[m] += from.triangle_pairs[m].get();
+    for (int s = 0; s < skip_count; ++s) {
+      const std::uint64_t skips = from.skipped[m][s].get();
+      to.triangle_pairs[m] += skips;
+      to.skipped[s] += skips;
+    }
+  }
   to.polygon_pairs += from.polygon_pairs.get();
   to.manifolds += from.manifolds.get();
   to.fallbacks += from.fallbacks.get();
-  for (int s = 0; s < skip_count; ++s) to.skipped[s] += from.skipped[s].get();
   to.internal_edge_pairs += from.internal_edge_pairs.get();
   to.recycled += from.recycled.get();
 }
@@ -24,7 +30,9 @@ void clear(ThreadCounters& c) {
   c.polygon_pairs.clear();
   c.manifolds.clear();
   c.fallbacks.clear();
-  for (Counter& x : c.skipped) x.clear();
+  for (auto& by_kind : c.skipped) {
+    for (Counter& x : by_kind) x.clear();
+  }
   c.internal_edge_pairs.clear();
   c.recycled.clear();
 }

@@ -27,13 +27,17 @@ class Counter {
   std::atomic<std::uint64_t> value_{0};
 };
 
-// `Stats`, field for field, as counters.
+// `Stats`, field for field, as counters, but for the skips: a skip is counted once, by backend
+// and kind (`skipped`), and `stats()` adds it to its backend's `triangle_pairs` (which here
+// counts the other evaluations). Why: a tall rain skips 723,000 of its 872,000 evaluations in
+// 150 steps, and one increment fewer each is 0.5 % of its narrow phase's instructions
+// (callgrind, Collide 407.8 M → 405.6 M).
 struct ThreadCounters {
   std::array<Counter, backend_count> triangle_pairs;
   Counter polygon_pairs;
   Counter manifolds;
   Counter fallbacks;
-  std::array<Counter, skip_count> skipped;
+  std::array<std::array<Counter, skip_count>, backend_count> skipped;
   Counter internal_edge_pairs;
   Counter recycled;
 
