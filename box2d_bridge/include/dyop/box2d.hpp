@@ -269,7 +269,8 @@ const char* name(Skip s);
 /// A caller of `collide_polygons` that replays one pair's evaluations keeps one for it.
 /// Default-constructed: nothing known yet (the first evaluation looks at the shapes).
 struct ContactMemory {
-  /// What the two shapes were found to be on the first evaluation.
+  /// What the two shapes were found to be on the first evaluation (two triangles are validated
+  /// on the first evaluation that runs the backend).
   enum class Shapes : std::uint8_t {
     Unchecked,         ///< not evaluated yet
     Triangles,         ///< two triangles accepted by `Triangle<float>::make`: the backend answers

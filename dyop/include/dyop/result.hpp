@@ -188,6 +188,8 @@ struct Result {
   /// Level ≥ Contact, not Invalid: world. Penetrating: the deepest point of A inside B or its
   /// projection, so that `witness_a - witness_b == depth * normal`. Separated: closest points
   /// (`Apart::Distance` only; with `Apart::Gap` the witnesses and features keep their defaults).
+  /// A manifold asked for with `Query::witnesses` false leaves them and the features at their
+  /// defaults too.
   Vec2<T> witness_a = Vec2<T>::Zero();
   Vec2<T> witness_b = Vec2<T>::Zero();  ///< Level ≥ Contact: see `witness_a`
   Feature feature_a;  ///< Level ≥ Contact: the feature of A that realises the answer
