@@ -162,6 +162,82 @@ TEST(Dyop, ManifoldWithoutWitnessesIsTheManifoldWithThemBitForBit) {
   EXPECT_GT(with_points, 1000 * methods) << "the classes hold touching and penetrating pairs";
 }
 
+// With `Apart::Gap` (the Box2D plug-in's query), a pair whose separation exceeds the margin is
+// answered as without masks: the same status, separation, depth and normal under every
+// internal-edge mask, and no manifold point. The plug-in finds a contact's masks only once an
+// answer without them is not apart beyond the margin. Every method of the registry with the rule,
+// over every class, both precisions, every edge mask.
+template <class T>
+int expect_apart_beyond_margin_ignores_masks(Method m, const Triangle<T>& a, const Triangle<T>& b,
+                                             Query<T> q) {
+  const Result<T> plain = penetrate(m, a, b, q);
+  if (plain.status == Status::Separated) {
+    EXPECT_GE(plain.separation, 0) << "a gap, at least 0";
+  }
+  if (!(plain.status == Status::Separated && plain.separation > q.margin)) return 0;
+  EXPECT_EQ(plain.manifold.point_count, 0);
+  for (unsigned edges = 1; edges < 64; ++edges) {
+    for (const unsigned vertices : {0u, 63u, edges ^ 63u}) {
+      q.internal_edges = {static_cast<std::uint8_t>(edges), static_cast<std::uint8_t>(vertices)};
+      const Result<T> r = penetrate(m, a, b, q);
+      EXPECT_EQ(r.status, plain.status);
+      EXPECT_EQ(r.separation, plain.separation);
+      EXPECT_EQ(r.depth, plain.depth);
+      EXPECT_EQ(r.normal, plain.normal);
+      EXPECT_EQ(r.manifold.point_count, 0) << "edges " << edges << " vertices " << vertices;
+    }
+  }
+  return 1;
+}
+
+TEST(InternalEdgesRule, APairApartBeyondTheMarginIsAnsweredAsWithoutMasks) {
+  int apart = 0;
+  for (const MethodInfo& row : method_table) {
+    if (!row.internal_edges()) continue;
+    for (InputClass c : test_classes) {
+      for (const RawPair& p : make_valid_pairs(c, 100, 29)) {
+        const auto d = build<double>(p);
+        const auto f = build<float>(p);
+        const Query<double> q{Level::Manifold, 0.05 * pair_size(p), 0.01 * pair_size(p),
+                              Apart::Gap};
+        apart += expect_apart_beyond_margin_ignores_masks(row.method, d.a.triangle, d.b.triangle,
+                                                          q);
+        if (!f.a.ok() || !f.b.ok()) continue;
+        const Query<float> qf{Level::Manifold, float(q.margin), float(q.face_hysteresis),
+                              Apart::Gap};
+        apart += expect_apart_beyond_margin_ignores_masks(row.method, f.a.triangle, f.b.triangle,
+                                                          qf);
+      }
+    }
+  }
+  EXPECT_GT(apart, 500) << "the classes hold pairs apart beyond the margin";
+}
+
+// Two slivers end to end, 24 apart (found by fuzz_sat, see degenerate_test.cpp): in float every
+// edge normal's gap lies in the touching band (the widest, 0.094, against 0.14), so the distance
+// decides that they are apart. With `Apart::Gap` the answer is still the gap along its axis, as
+// for any pair apart, so that `separation > margin` means the masks are not read (checked under
+// every edge mask); with `Apart::Distance`, the distance.
+TEST(InternalEdgesRule, APairApartByItsDistanceInTheTouchingBandIsAnsweredWithItsGap) {
+  using V = Vec2<double>;
+  const RawPair p{{V(0, 0), V(0, 4), V(4, -1020)}, {V(-4, 36908), V(4, 1032), V(0, 28)}};
+  const auto t = build<float>(p);
+  ASSERT_TRUE(t.a.ok() && t.b.ok());
+  for (const Method m : {Method::Dyop, Method::Sat}) {
+    SCOPED_TRACE(name(m));
+    Query<float> q{Level::Manifold, 0.05f, 0, Apart::Gap};
+    const Result<float> gap = penetrate(m, t.a.triangle, t.b.triangle, q);
+    EXPECT_EQ(gap.status, Status::Separated);
+    EXPECT_GE(gap.separation, 0.05f);
+    EXPECT_LE(gap.separation, 0.14f);
+    EXPECT_EQ(expect_apart_beyond_margin_ignores_masks(m, t.a.triangle, t.b.triangle, q), 1);
+    q.apart = Apart::Distance;
+    const Result<float> distance = penetrate(m, t.a.triangle, t.b.triangle, q);
+    EXPECT_EQ(distance.status, Status::Separated);
+    EXPECT_NEAR(distance.separation, 24.0f, 1e-3f * 36908);
+  }
+}
+
 TEST(DyopFast, FindsAVertexIntoFaceDepthLikeThePaper) {
   const auto a = tri<double>(0, 0, 4, 0, 2, 4);
   const auto b = tri<double>(2, 0.5, 1, -2, 3, -2);

@@ -40,19 +40,27 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// The pair's masks when the rule is on: a world's contact finds them again whenever its stamp
-// (the install, the world's fixtures) moved since they were found.
-InternalEdges masks_for(const Setting& setting, ContactMemory& memory,
-                        const TriangleContact* contact) {
-  if (!setting.internal_edges) return {};
-  if (contact) {
-    const std::uint16_t stamp = contact->internal_edges_stamp(setting.epoch);
-    if (memory.internal_edges_stamp != stamp) {
-      memory.internal_edges = contact->find_internal_edges(stamp, setting.epoch);
-      memory.internal_edges_stamp = stamp;
-    }
+// True when a world's contact has no masks found under its stamp as it is now (see
+// `TriangleContact::internal_edges_stamp`; the rule on). A new stamp is recorded at once, and a
+// contact with a static body then tells the others (`TriangleContact::internal_edges_stamp_moved`),
+// but the masks are found only for an answer that needs them (`needs_masks`): most contacts a
+// broad phase makes never come within the margin, and a static triangle's masks cost about 11,000
+// instructions (a query of the world's broad phase and the covering tests).
+bool masks_put_off(const Setting& setting, ContactMemory& memory, const TriangleContact& contact) {
+  const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
+  if (memory.internal_edges_stamp != stamp) {
+    contact.internal_edges_stamp_moved(memory.internal_edges_stamp);
+    memory.internal_edges_stamp = stamp;
+    memory.internal_edges_found = false;
   }
-  return memory.internal_edges;
+  return !memory.internal_edges_found;
+}
+
+// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
+// any masks (`Query::internal_edges`, `Apart::Gap`; tested over every input class and edge mask in
+// the library's `InternalEdgesRule` test).
+bool needs_masks(const Result<float>& r, float margin) {
+  return !(r.status == Status::Separated && r.separation > margin);
 }
 
 }  // namespace
@@ -75,16 +83,32 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact) {
   Query<float> query;
-  query.internal_edges = masks_for(setting, memory, contact);
-  if (query.internal_edges.any()) counters().internal_edge_pairs.add();
   query.level = Level::Manifold;
   query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's
   query.face_hysteresis = face_hysteresis;
   query.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   query.witnesses = false;   // Box2D's solver reads the manifold alone
   PairState cold;
-  const Result<float> r = penetrate(*setting.method, placed(pair.a), placed(pair.b, b_in_a), query,
-                                    setting.config.lin_canny_cache ? &memory.warm_start : &cold);
+  PairState* const state = setting.config.lin_canny_cache ? &memory.warm_start : &cold;
+  const Triangle<float> a = placed(pair.a);
+  const Triangle<float> b = placed(pair.b, b_in_a);
+  // The masks: a world's contact's own when found under its stamp; a caller's
+  // (`collide_polygons`) as given.
+  bool put_off = false;
+  if (setting.internal_edges) {
+    put_off = contact && masks_put_off(setting, memory, *contact);
+    if (!put_off) query.internal_edges = memory.internal_edges;
+  }
+  Result<float> r = penetrate(*setting.method, a, b, query, state);
+  if (put_off && needs_masks(r, query.margin)) {
+    memory.internal_edges = contact->find_internal_edges(memory.internal_edges_stamp,
+                                                         setting.epoch);
+    memory.internal_edges_found = true;
+    query.internal_edges = memory.internal_edges;
+    // The methods with the rule (`dyop`, `sat`) keep no pair state: this run answers afresh.
+    if (query.internal_edges.any()) r = penetrate(*setting.method, a, b, query, state);
+  }
+  if (query.internal_edges.any()) counters().internal_edge_pairs.add();
   if (r.status == Status::Invalid) return false;
 
   const Manifold<float>& mf = r.manifold;

@@ -138,22 +138,26 @@ bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
           m_fixtureB->GetBody()->GetType() == b2_staticBody);
 }
 
-InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp,
-                                                   std::uint8_t epoch) const {
-  // Found before under another stamp, with a static body: its static neighbours may have moved,
-  // and the pair's other static contacts may not see it in their own stamps.
-  if (memory_.internal_edges_stamp != 0 &&
-      (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
-       m_fixtureB->GetBody()->GetType() == b2_staticBody)) {
+void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
+  // Its static neighbours may have moved, and the pair's other static contacts may not see it in
+  // their own stamps.
+  if (seen != 0 && (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
+                    m_fixtureB->GetBody()->GetType() == b2_staticBody)) {
     static_neighbourhood_changed(*m_fixtureA->GetBody(), *m_fixtureB->GetBody());
   }
+}
+
+InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp,
+                                                   std::uint8_t epoch) const {
   // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
   // the two bodies made or destroyed between steps) clears them all.
   std::optional<InternalEdges> a;
   std::optional<InternalEdges> b;
   for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-    if (&c == this || c.memory_.internal_edges_stamp != stamp) return true;
+    if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found) {
+      return true;
+    }
     const InternalEdges m = c.memory_.internal_edges;
     if (!a && c.m_fixtureA == m_fixtureA) a = half(m, false);
     if (!a && c.m_fixtureB == m_fixtureA) a = half(m, true);

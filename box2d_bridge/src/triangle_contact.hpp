@@ -76,11 +76,14 @@ class TriangleContact final : public b2Contact {
   // from any contact of its body with that fixture whose masks still hold (`half_from_body`);
   // else found from the fixture's edge group (`triangle_internal_edges`). A box on a ground finds
   // a ground triangle's masks once for all its fixtures touching it, and a body in a pile finds
-  // each of its triangles' masks once for all the bodies it touches. Masks found again under a
-  // new stamp with a static body in the pair mean its static neighbourhood changed: the pair's
-  // other contacts with static bodies find theirs again too (see `static_neighbourhood_changed`
-  // in the .cpp).
+  // each of its triangles' masks once for all the bodies it touches.
   InternalEdges find_internal_edges(std::uint16_t stamp, std::uint8_t epoch) const;
+
+  // Its stamp moved from `seen` (`ContactMemory::internal_edges_stamp`, 0: none) to another. Seen
+  // before, with a static body in the pair: its static neighbourhood changed, and the pair's
+  // other contacts with static bodies find their masks again too (see
+  // `static_neighbourhood_changed` in the .cpp).
+  void internal_edges_stamp_moved(std::uint16_t seen) const;
 
   // The manifold it would compute now with nothing kept (`measurement::evaluate_afresh`), its
   // state unchanged.
@@ -90,7 +93,9 @@ class TriangleContact final : public b2Contact {
   // would have now), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
     const std::uint16_t found = memory_.internal_edges_stamp;
-    if (found == 0 || found != internal_edges_stamp(epoch)) return std::nullopt;
+    if (!memory_.internal_edges_found || found == 0 || found != internal_edges_stamp(epoch)) {
+      return std::nullopt;
+    }
     return memory_.internal_edges;
   }
 

@@ -301,6 +301,41 @@ TEST(InternalEdges, MasksLentBetweenContactsOfABodyAreTheMasksFoundAfresh) {
   ASSERT_TRUE(uninstall().ok());
 }
 
+// A contact finds its masks when its pair first comes within the skins, not when the broad phase
+// makes it: a pair apart beyond the skins is answered the same under any masks (`Apart::Gap`).
+// Every skip off, so that every contact runs the method at every step: U bodies falling into a
+// bin of triangles make contacts that hold no masks while apart, and every contact whose manifold
+// has points holds the masks of its two fixtures found afresh.
+TEST(InternalEdges, AContactFindsItsMasksOnlyOnceWithinTheSkins) {
+  Config every_pair = Config::none();
+  every_pair.recycle_distance = 0;
+  ASSERT_TRUE(install(Backend::Dyop, every_pair).ok());
+  World world;
+  scenes::add_triangle_bin(world, 7.0f, 12.0f);
+  for (int i = 0; i < 3; ++i) {
+    scenes::add_u_shape(world, b2Vec2(-4.0f + 4.0f * static_cast<float>(i), 1.5f), 0.4f * i);
+  }
+  int apart_without_masks = 0;
+  int with_points = 0;
+  for (int step = 0; step < 120; ++step) {
+    world.step();
+    for (b2Contact* c = world->GetContactList(); c; c = c->GetNext()) {
+      const std::optional<InternalEdges> held = contact_internal_edges(*c);
+      if (c->GetManifold()->pointCount == 0) {
+        apart_without_masks += !held;
+        continue;
+      }
+      ASSERT_TRUE(held) << "step " << step;
+      EXPECT_EQ(*held, InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
+                                           triangle_internal_edges(*c->GetFixtureB())));
+      ++with_points;
+    }
+  }
+  EXPECT_GT(apart_without_masks, 100);
+  EXPECT_GT(with_points, 100);
+  ASSERT_TRUE(uninstall().ok());
+}
+
 // The same two triangles, the body resting on G next to F, so that it has a contact with F too. F
 // is destroyed and a triangle added to the ground far away in the same pause between steps: the
 // world's fixture count ends where it was, so only the destroyed contact with F tells the body's

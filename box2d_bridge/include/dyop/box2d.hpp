@@ -296,13 +296,18 @@ struct ContactMemory {
   /// world's contact finds them itself (see `internal_edges_stamp`); a caller of
   /// `collide_polygons` sets them.
   InternalEdges internal_edges{};
-  /// A world's contact: what its masks were found under, 0 not yet: the install (see `install`),
+  /// A world's contact: what its masks hold under, 0 not yet seen: the install (see `install`),
   /// the number of fixture proxies of the world (any fixture created or destroyed in the world
-  /// changes it) and the frames of the pair's static bodies, folded into 16 bits. They are found when the rule first needs them, from the two
-  /// fixtures' bodies as they are then, and again when the stamp no longer matches, or after a
+  /// changes it) and the frames of the pair's static bodies, folded into 16 bits. Recorded at the
+  /// first answer under it; the masks are found when the rule first needs them under it (see
+  /// `internal_edges_found`), from the two fixtures' bodies as they are then. Set to 0 after a
   /// contact between the same two bodies was made or destroyed between steps (a fixture of one of
-  /// them added, destroyed, moved, enabled or changed type): the contact then sets this to 0.
+  /// them added, destroyed, moved, enabled or changed type).
   std::uint16_t internal_edges_stamp = 0;
+  /// A world's contact: `internal_edges` were found under `internal_edges_stamp`. False while
+  /// every answer under it was apart beyond the margin, which is the same under any masks (see
+  /// `Apart::Gap`): most contacts a broad phase makes never come closer.
+  bool internal_edges_found = false;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s

@@ -28,11 +28,16 @@ template <class T, class Find>
   // and a gap far below the coordinates' rounding comes out as a small overlap of either sign
   // (slivers 1e148 long, 3e139 apart end to end: found by fuzz_batch and fuzz_sat), so the
   // distance decides.
+  // With `Apart::Gap` a pair found apart so is still answered with its gap (at least 0), as
+  // every other pair apart: `separation` then exceeds the margin exactly when the least overlap is
+  // below `-margin`, where the masks are not read (`certify_axes`), so a caller may run a pair
+  // without masks first and find them only when that answer is not apart beyond the margin.
   const bool gap_in_band = r.status == Status::Touching;
   const Closest<T> near = gap_in_band ? find(f) : Closest<T>{};
-  if (gap_in_band && near.distance > band) {
+  const bool apart_in_band = gap_in_band && near.distance > band;
+  if (apart_in_band && q.apart == Apart::Distance) {
     fill_closest(f, level, near, r);
-  } else if (r.status == Status::Separated && q.apart == Apart::Gap) {
+  } else if ((apart_in_band || r.status == Status::Separated) && q.apart == Apart::Gap) {
     fill_gap(f, level, AxisOverlap<T>{least, overlap[least], 0}, r);
   } else if (r.status == Status::Separated) {
     fill_separated(f, level, r, find);

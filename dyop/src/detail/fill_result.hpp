@@ -89,13 +89,15 @@ void fill_closest(const PairFrame<T>& f, Level level, const Closest<T>& c, Resul
   r.feature_b = input_feature(f.tb, c.feature_b);
 }
 
-// A pair proven apart by axis `ax` (`ax.overlap` < 0), answered with the gap alone (`Apart::Gap`):
-// no distance, witnesses or features.
+// A pair apart, answered with the gap along its least axis `ax` alone (`Apart::Gap`): no
+// distance, witnesses or features. The gap is `-ax.overlap`, at least 0: a pair proven apart by
+// its distance while its least overlap lies in the touching band may have a rounded overlap of
+// either sign there.
 template <class T>
 void fill_gap(const PairFrame<T>& f, Level level, const AxisOverlap<T>& ax, Result<T>& r) {
   r.status = Status::Separated;
   if (level == Level::Overlap) return;
-  r.separation = -ax.overlap;
+  r.separation = std::max(T(0), -ax.overlap);
   r.depth = 0;
   r.normal = f.axis(ax.axis);
 }
