@@ -185,7 +185,18 @@ struct Interval {
 struct Segment {
   b2Vec2 a;
   b2Vec2 b;
+  // Bit i: both ends within the tolerance of the own triangle's edge line i (`on_own_lines`).
+  std::uint8_t on_own_lines = 0;
 };
+
+// True when `x` lies within `tol` of `line` (the test of `opposite_cover`).
+bool within(const Line& line, const b2Vec2& x, float tol) { return !(std::abs(line.off(x)) > tol); }
+
+// Bit i set when `x` lies within `tol` of `lines[i]`.
+std::uint8_t on_own_lines(const Line (&lines)[3], const b2Vec2& x, float tol) {
+  return static_cast<std::uint8_t>(within(lines[0], x, tol) | within(lines[1], x, tol) << 1 |
+                                   within(lines[2], x, tol) << 2);
+}
 
 // What the edges among `edges` running the other way along `line` cover of it (both ends within
 // `tol` of the line; their triangles lie on its other side): one interval per edge, into `out`.
@@ -194,7 +205,20 @@ void opposite_cover(const std::vector<Segment>& edges, const Line& line, float t
   out.clear();
   for (const Segment& e : edges) {
     if (b2Dot(e.b - e.a, line.unit) >= 0) continue;
-    if (std::abs(line.off(e.a)) > tol || std::abs(line.off(e.b)) > tol) continue;
+    if (!within(line, e.a, tol) || !within(line, e.b, tol)) continue;
+    out.push_back({line.along(e.b), line.along(e.a)});
+  }
+}
+
+// The same for the own triangle's edge line `i`, whose ends' tests were made once per vertex
+// (`Segment::on_own_lines`): a vertex is shared by two edges of its triangle, and most edges lie
+// on no own line. Callgrind, 150 steps, Collide: tiles 105.0 M → 100.8 M, slide 41.2 M → 40.6 M.
+void opposite_cover_own(const std::vector<Segment>& edges, const Line& line, int i,
+                        std::vector<Interval>& out) {
+  out.clear();
+  for (const Segment& e : edges) {
+    if (!((e.on_own_lines >> i) & 1)) continue;
+    if (b2Dot(e.b - e.a, line.unit) >= 0) continue;
     out.push_back({line.along(e.b), line.along(e.a)});
   }
 }
@@ -285,18 +309,24 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   if (triangles.size() == 1) return {};
   const float tol = group.tolerance();
   const GroupTriangle& self = triangles.front();
+  const Line lines[3] = {{self.v[0], self.v[1]}, {self.v[1], self.v[2]}, {self.v[2], self.v[0]}};
   thread_local std::vector<Segment> edges;
   edges.clear();
   for (const GroupTriangle& t : triangles) {
-    for (int k = 0; k < 3; ++k) edges.push_back({t.v[k], t.v[next(k)]});
+    std::uint8_t on[3];
+    for (int k = 0; k < 3; ++k) on[k] = on_own_lines(lines, t.v[k], tol);
+    for (int k = 0; k < 3; ++k) {
+      edges.push_back({t.v[k], t.v[next(k)], static_cast<std::uint8_t>(on[k] & on[next(k)])});
+    }
   }
 
   thread_local std::vector<Interval> cover;
   InternalEdges masks;
   for (int i = 0; i < 3; ++i) {
-    const Line line(self.v[i], self.v[next(i)]);
-    opposite_cover(edges, line, tol, cover);
-    if (covers_wholly(cover, line.length, tol)) masks.edges |= static_cast<std::uint8_t>(1u << i);
+    opposite_cover_own(edges, lines[i], i, cover);
+    if (covers_wholly(cover, lines[i].length, tol)) {
+      masks.edges |= static_cast<std::uint8_t>(1u << i);
+    }
   }
   for (int i = 0; i < 3; ++i) {
     const bool out_internal = (masks.edges >> i) & 1;
