@@ -62,6 +62,7 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
       out << (s ? ", " : " ") << box2d::name(static_cast<box2d::Skip>(s)) << ' ' << (*m.skips)[s];
     }
     out << '\n';
+    if (!m.skip_config->internal_edges) out << "  internal edges: off (ghost collisions kept)\n";
     if (m.skip_config->recycle_distance > 0) {
       out << "  recycling within " << m.skip_config->recycle_distance << " m: kept "
           << m.recycled.value_or(0) << " manifolds of " << m.plugin_evaluations.value_or(0)
@@ -99,6 +100,11 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
     }
     skips.config.recycle_distance = *c.recycle;
   }
+  if (c.internal_edges != "on" && c.internal_edges != "off") {
+    err << "dyop scene: --internal-edges takes on or off, not '" << c.internal_edges << "'\n";
+    return exit_usage_error;
+  }
+  skips.config.internal_edges = c.internal_edges == "on";
   if (c.json == "-" && c.svg == "-") {
     err << "dyop scene: --json and --svg cannot both go to standard output\n";
     return exit_usage_error;
@@ -188,6 +194,10 @@ void add_scene_command(CLI::App& app, int& exit_code) {
       "Keep a contact's manifold while its pair moved less than this (metres; 0: off; default: "
       "the plug-in's default, " +
           std::to_string(box2d::Config{}.recycle_distance) + ")");
+  cmd->add_option("--internal-edges", args->internal_edges,
+                  "The plug-in's internal-edge rule: on (the default) or off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_flag("--check-manifolds", args->check_manifolds,
                 "Check every manifold the solver gets against the exact answer (slows the narrow "
                 "phase: for accuracy, not timing)");

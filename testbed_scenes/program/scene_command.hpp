@@ -28,6 +28,9 @@ struct SceneCommand {
   /// `box2d::Config::recycle_distance` (metres, ≥ 0; 0: off); none: the default config's. The
   /// `paper` scene ignores it.
   std::optional<float> recycle;
+  /// `box2d::Config::internal_edges`: "on" (the default config's) or "off". The `paper` scene
+  /// ignores it.
+  std::string internal_edges = "on";
   /// Check every manifold the solver gets against the exact answer (`Scene::check_manifolds`;
   /// slows the narrow phase).
   bool check_manifolds = false;

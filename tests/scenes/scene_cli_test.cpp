@@ -85,6 +85,21 @@ TEST(SceneCli, SkipTakesAllNoneOrAListAndAnUnknownNameIsAUsageError) {
   }
 }
 
+// The rule switch: off keeps the ghost collisions, so the slide's world differs, and says so.
+TEST(SceneCli, InternalEdgesTakesOnOrOffAndOffChangesTheSlide) {
+  const auto hash = [](const Outcome& o) { return nlohmann::json::parse(o.out)["hash"]; };
+  const Outcome on = run("scene slide --runner dyop --steps 60 --json -");
+  const Outcome off = run("scene slide --runner dyop --steps 60 --internal-edges off --json -");
+  ASSERT_EQ(on.status, 0) << on.err;
+  ASSERT_EQ(off.status, 0) << off.err;
+  EXPECT_NE(hash(on), hash(off));
+  EXPECT_NE(off.err.find("internal edges: off"), std::string::npos) << off.err;
+  EXPECT_EQ(on.err.find("internal edges: off"), std::string::npos) << on.err;
+  EXPECT_EQ(hash(run("scene slide --runner dyop --steps 60 --internal-edges on --json -")),
+            hash(on));
+  EXPECT_EQ(run("scene slide --runner dyop --internal-edges maybe").status, 1);
+}
+
 TEST(SceneCli, Box2DsOwnContactRunsBox2DScenesWithoutPlugInCounters) {
   const Outcome own = run("scene stack --runner box2d-own --steps 30 --json -");
   ASSERT_EQ(own.status, 0) << own.err;
