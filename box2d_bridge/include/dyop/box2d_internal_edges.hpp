@@ -39,8 +39,8 @@ void forget_internal_edges(b2World& world);
 
 /// The masks `contact` holds for its pair (`Query::internal_edges`: A's bits, then B's), when it
 /// found them, or was lent them by another contact, under the world as it is now (the same
-/// install, fixtures and static frames); nothing otherwise, and for a contact the plug-in did not
-/// make. What the masks the rule applies are, for tests and for drawing: they equal
+/// install, fixtures and static frames); nothing otherwise (a contact finds them once its pair
+/// first comes within the skins), and for a contact the plug-in did not make. What the masks the rule applies are, for tests and for drawing: they equal
 /// `InternalEdges::pair` of the two fixtures' `triangle_internal_edges`.
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact);
 

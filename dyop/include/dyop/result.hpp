@@ -62,10 +62,11 @@ enum class Apart : std::uint8_t {
   /// edge normal of either triangle, at least 0), a lower bound on the distance, and `normal` that
   /// axis; the witnesses and features are left at their defaults. Also for a pair whose gap lies
   /// in the touching band and whose distance proved it apart. So, with internal-edge masks,
-  /// `separation > margin` is exactly the case the masks are not read (`Query::internal_edges`). For callers that want penetration depth
-  /// and nothing for pairs apart (the paper's setting; a Box2D manifold beyond the skins). The
-  /// exact methods (`dyop`, `sat`) honour it; the others find the distance on their way and
-  /// report it (`lin_canny`, `epa`) or never compute one (`dyop_fast`, `dyop_paper`).
+  /// `separation > margin` is exactly the case the masks are not read (`Query::internal_edges`).
+  /// For callers that want penetration depth and nothing for pairs apart (the paper's setting; a
+  /// Box2D manifold beyond the skins). The exact methods (`dyop`, `sat`) honour it; the others
+  /// find the distance on their way and report it (`lin_canny`, `epa`) or never compute one
+  /// (`dyop_fast`, `dyop_paper`).
   Gap,
 };
 

@@ -28,10 +28,10 @@ template <class T, class Find>
   // and a gap far below the coordinates' rounding comes out as a small overlap of either sign
   // (slivers 1e148 long, 3e139 apart end to end: found by fuzz_batch and fuzz_sat), so the
   // distance decides.
-  // With `Apart::Gap` a pair found apart so is still answered with its gap (at least 0), as
-  // every other pair apart: `separation` then exceeds the margin exactly when the least overlap is
-  // below `-margin`, where the masks are not read (`certify_axes`), so a caller may run a pair
-  // without masks first and find them only when that answer is not apart beyond the margin.
+  // With `Apart::Gap` a pair the distance proves apart is still answered with its gap (at least
+  // 0), as every other pair apart: `separation` then exceeds the margin exactly when the least
+  // overlap is below `-margin`, where the masks are not read (`certify_axes`), so a caller may
+  // run a pair without masks first and find them only when that answer is not apart beyond it.
   const bool gap_in_band = r.status == Status::Touching;
   const Closest<T> near = gap_in_band ? find(f) : Closest<T>{};
   const bool apart_in_band = gap_in_band && near.distance > band;
