@@ -104,12 +104,13 @@ inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b
 }
 
 // How far a manifold the method just computed may move before a recompute: the setting's
-// distance for one with points; for an empty one, also no farther than its judged face's
-// separation beyond what a manifold reaches, so that no new contact is missed (see
-// `face_reach`).
+// distance for one with points (a share of it for a pair with a static body: `static_pair_share`);
+// for an empty one, also no farther than its judged face's separation beyond what a manifold
+// reaches, so that no new contact is missed (see `face_reach`).
 inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, const PolygonPair& p,
-                           const b2Transform& b_in_a, const ContactMemory& memory, float margin) {
-  const float distance = setting.config.recycle_distance;
+                           const b2Transform& b_in_a, const ContactMemory& memory, float margin,
+                           bool static_pair) {
+  const float distance = setting.config.recycle_distance * (static_pair ? static_pair_share : 1);
   if (manifold.pointCount > 0) return distance;
   if (memory.last_face < 0) return 0;
   return std::min(distance, face_separation(memory.last_face, p.a, p.b, b_in_a) -
@@ -180,7 +181,8 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
         const float slack =
             setting.never_recompute
                 ? 1.0f
-                : recycle_slack(setting, *manifold, p, b_in_a, memory, p.a.m_radius + p.b.m_radius);
+                : recycle_slack(setting, *manifold, p, b_in_a, memory, p.a.m_radius + p.b.m_radius,
+                                contact && contact->with_static_body());
         recycling->remember(b_in_a, p.b.m_centroid, slack, setting.epoch);
       }
       return;

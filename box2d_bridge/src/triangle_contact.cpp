@@ -133,16 +133,13 @@ TriangleContact* TriangleContact::ours(b2Contact* c) {
 
 bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
   const std::uint16_t found = memory_.internal_edges_stamp;
-  return found != 0 && found != internal_edges_stamp(epoch) &&
-         (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
-          m_fixtureB->GetBody()->GetType() == b2_staticBody);
+  return found != 0 && found != internal_edges_stamp(epoch) && with_static_body();
 }
 
 void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
   // Its static neighbours may have moved, and the pair's other static contacts may not see it in
   // their own stamps.
-  if (seen != 0 && (m_fixtureA->GetBody()->GetType() == b2_staticBody ||
-                    m_fixtureB->GetBody()->GetType() == b2_staticBody)) {
+  if (seen != 0 && with_static_body()) {
     static_neighbourhood_changed(*m_fixtureA->GetBody(), *m_fixtureB->GetBody());
   }
 }

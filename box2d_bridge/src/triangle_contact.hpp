@@ -89,6 +89,12 @@ class TriangleContact final : public b2Contact {
   // state unchanged.
   void evaluate_afresh(b2Manifold* manifold) const;
 
+  // True when a body of its pair is static.
+  bool with_static_body() const {
+    return m_fixtureA->GetBody()->GetType() == b2_staticBody ||
+           m_fixtureB->GetBody()->GetType() == b2_staticBody;
+  }
+
   // Its masks when they hold under install `epoch` as the world is now (found under the stamp it
   // would have now), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {

@@ -210,7 +210,9 @@ struct Config {
   /// `default_recycle_distance`). Metres; 0: off, and the world is bit-identical to the plug-in
   /// without it. A world's contact keeps the manifold it computed
   /// (Box2D hands it back at every update) while the relative pose of its two triangles has moved
-  /// less than this since it was computed: B's centroid against A plus the relative turn times a
+  /// less than this (a fifth of it for a pair with a static body: a body sinking deeper into
+  /// static ground meets Box2D's time-of-impact pass) since it was computed: B's centroid against
+  /// A plus the relative turn times a
   /// lever of the pair's extent (`|Δc| + |sin Δθ|·1.01·(3·radius_sum + reach)`), and never across
   /// a turn of more than about 11.5° (cosine 0.98). Sound in Box2D 2.4: manifolds are in body
   /// frames and the solver recomputes every separation from the current transforms, and the
