@@ -212,9 +212,9 @@ struct Config {
   /// (Box2D hands it back at every update) while the relative pose of its two triangles has moved
   /// less than this (a fifth of it for a pair with a static body: a body sinking deeper into
   /// static ground meets Box2D's time-of-impact pass) since it was computed: B's centroid against
-  /// A plus the relative turn times a
-  /// lever of the pair's extent (`|Δc| + |sin Δθ|·1.01·(3·radius_sum + reach)`), and never across
-  /// a turn of more than about 11.5° (cosine 0.98). Sound in Box2D 2.4: manifolds are in body
+  /// A plus the relative turn times a lever of the pair's extent
+  /// (`|Δc| + |sin Δθ|·1.01·(3·radius_sum + reach)`), and never across a turn of more than about
+  /// 11.5° (cosine 0.98). Sound in Box2D 2.4: manifolds are in body
   /// frames and the solver recomputes every separation from the current transforms, and the
   /// impulses carry over by `id.key`; what a kept manifold misses is a change of features (a
   /// vertex coming within the skins, a point sliding off a face), by at most about this distance.
