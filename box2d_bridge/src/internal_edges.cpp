@@ -213,6 +213,8 @@ void opposite_cover(const std::vector<Segment>& edges, const Line& line, float t
 // The same for the own triangle's edge line `i`, whose ends' tests were made once per vertex
 // (`Segment::on_own_lines`): a vertex is shared by two edges of its triangle, and most edges lie
 // on no own line. Callgrind, 150 steps, Collide: tiles 105.0 M → 100.8 M, slide 41.2 M → 40.6 M.
+// Not one template with `opposite_cover`: each tests first what rejects cheapest for its callers
+// (here the bit, there the direction; one order for both cost tiles 1.5 % or 3.4 %).
 void opposite_cover_own(const std::vector<Segment>& edges, const Line& line, int i,
                         std::vector<Interval>& out) {
   out.clear();
