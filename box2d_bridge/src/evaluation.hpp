@@ -46,9 +46,11 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 
 // The setting's method on two valid triangles (`b_in_a`: B's body frame given in A's), with the
 // pair's internal-edge masks when the rule is on: `contact` (a world's contact, whose memory is
-// `memory`) finds them when its memory's are not current; nullptr (`collide_polygons`): the
-// caller set them in `memory`. True when it answered and `manifold` holds its answer; false when the
-// method could not answer (`Status::Invalid`) and Box2D's code must.
+// `memory`) finds them when its memory's are not current, and only once an answer without them
+// is not apart beyond the skins (it runs the method again with them); nullptr
+// (`collide_polygons`): the caller set them in `memory`. True when it answered and `manifold`
+// holds its answer; false when the method could not answer (`Status::Invalid`) and Box2D's code
+// must.
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact);
 
