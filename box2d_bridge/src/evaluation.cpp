@@ -40,17 +40,21 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// True when a world's contact has no masks found under its stamp as it is now (see
-// `TriangleContact::internal_edges_stamp`; the rule on). A new stamp is recorded at once, and a
-// contact with a static body then tells the others (`TriangleContact::internal_edges_stamp_moved`),
-// but the masks are found only for an answer that needs them (`needs_masks`): most contacts a
-// broad phase makes never come within the margin, and a static triangle's masks cost about 11,000
-// instructions (a query of the world's broad phase and the covering tests).
+// True when a world's contact has no masks found under its stamp and the world's fixture count
+// as they are now (see `TriangleContact::internal_edges_stamp` and `world_fixtures`; the rule on).
+// A new stamp is recorded at once, and a contact with a static body then tells the others
+// (`TriangleContact::internal_edges_stamp_moved`); a new fixture count tells nobody (every contact
+// sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
+// contacts a broad phase makes never come within the margin, and a static triangle's masks cost
+// about 11,000 instructions (a query of the world's broad phase and the covering tests).
 bool masks_put_off(const Setting& setting, ContactMemory& memory, const TriangleContact& contact) {
   const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
   if (memory.internal_edges_stamp != stamp) {
     contact.internal_edges_stamp_moved(memory.internal_edges_stamp);
     memory.internal_edges_stamp = stamp;
+    memory.internal_edges_found = false;
+  } else if (memory.internal_edges_found &&
+             memory.internal_edges_fixtures != contact.world_fixtures()) {
     memory.internal_edges_found = false;
   }
   return !memory.internal_edges_found;
@@ -101,8 +105,9 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   }
   Result<float> r = penetrate(*setting.method, a, b, query, state);
   if (put_off && needs_masks(r, query.margin)) {
-    memory.internal_edges = contact->find_internal_edges(memory.internal_edges_stamp,
-                                                         setting.epoch);
+    memory.internal_edges_fixtures = contact->world_fixtures();
+    memory.internal_edges = contact->find_internal_edges(
+        memory.internal_edges_stamp, memory.internal_edges_fixtures, setting.epoch);
     memory.internal_edges_found = true;
     query.internal_edges = memory.internal_edges;
     // The methods with the rule (`dyop`, `sat`) keep no pair state: this run answers afresh.

@@ -92,7 +92,10 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
 
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
-// (their stamp moved, or they were forgotten) recomputes.
+// (their stamp moved, or they were forgotten) recomputes; a change of the world's fixture count
+// alone does not (see `ContactMemory::internal_edges_fixtures`): a fixture created or destroyed
+// far from the pair cannot reach it within the distance a manifold is kept, and one near it makes
+// or ends a contact with one of its bodies, which forgets the masks.
 inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
                            const ContactMemory& memory, const ManifoldRecycling& recycling,
                            const TriangleContact* contact, float margin) {

@@ -19,7 +19,7 @@ namespace {
 
 // Box2D's block allocator serves sizes in classes (..., 160, 192, 224, 256, 320, ...). Box2D's
 // own polygon contact adds nothing to b2Contact (208 bytes in Box2D 2.4.1): the 224-byte class.
-// Ours adds its `ContactMemory` (16 bytes) and `ManifoldRecycling` (24): the 256-byte class.
+// Ours adds its `ContactMemory` (20 bytes) and `ManifoldRecycling` (24): the 256-byte class.
 constexpr std::size_t allocator_class_below = 224;
 constexpr std::size_t allocator_class = 256;
 
@@ -144,7 +144,7 @@ void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
   }
 }
 
-InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp,
+InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uint16_t fixtures,
                                                    std::uint8_t epoch) const {
   // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
@@ -152,7 +152,8 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp,
   std::optional<InternalEdges> a;
   std::optional<InternalEdges> b;
   for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-    if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found) {
+    if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found ||
+        c.memory_.internal_edges_fixtures != fixtures) {
       return true;
     }
     const InternalEdges m = c.memory_.internal_edges;

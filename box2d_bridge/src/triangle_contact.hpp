@@ -50,34 +50,41 @@ class TriangleContact final : public b2Contact {
   static TriangleContact* ours(b2Contact* c);
 
   // What its internal-edge masks would be found under now (`ContactMemory::internal_edges_stamp`):
-  // install `epoch`, its world's fixture proxies and the frames of its static bodies, never 0. Why
-  // the proxy count: it is the world's own and moves whenever a fixture of the world is created or
-  // destroyed (a fixture added next to a triangle, or one taken away from under a body resting
-  // elsewhere on its neighbour, changes that neighbour's masks), in O(1). Why a static body's
-  // frame: static bodies share edges with each other, so moving one (`SetTransform`) or making it
-  // static or not (`SetType`) changes its triangles' masks, and nothing else in the world records
-  // a move within the broad phase's margin. Folded with the install so that a change of any gives
-  // another stamp (short of a 16-bit collision). Inline: every full evaluation with the rule on
-  // asks.
+  // install `epoch` and the frames of its static bodies, never 0. Why a static body's frame:
+  // static bodies share edges with each other, so moving one (`SetTransform`) or making it static
+  // or not (`SetType`) changes its triangles' masks, and nothing else in the world records a move
+  // within the broad phase's margin. Folded with the install so that a change of either gives
+  // another stamp (short of a 16-bit collision). Inline: every evaluation with the rule on that
+  // keeps a manifold or answers afresh asks.
   std::uint16_t internal_edges_stamp(std::uint8_t epoch) const {
-    const b2Body& a = *m_fixtureA->GetBody();
-    const auto proxies = static_cast<std::uint32_t>(
-        a.GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
-    std::uint32_t h = proxies * 257u + epoch;
-    h = fold_static_frame(h, a);
+    std::uint32_t h = epoch;
+    h = fold_static_frame(h, *m_fixtureA->GetBody());
     h = fold_static_frame(h, *m_fixtureB->GetBody());
     const auto stamp = static_cast<std::uint16_t>(h ^ (h >> 16));
     return stamp != 0 ? stamp : 1;
   }
 
+  // The world's count of fixture proxies, its low 16 bits (`ContactMemory::
+  // internal_edges_fixtures`). Why: it is the world's own and moves whenever a fixture of the
+  // world is created or destroyed (a fixture added next to a triangle, or one taken away from
+  // under a body resting elsewhere on its neighbour, changes that neighbour's masks), in O(1). A
+  // pair that moves only within the recycling distance cannot reach such a change far from it: a
+  // kept manifold does not ask.
+  std::uint16_t world_fixtures() const {
+    return static_cast<std::uint16_t>(
+        m_fixtureA->GetBody()->GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
+  }
+
   // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp` (install
-  // `epoch`): each triangle's half taken from another contact between the same two bodies that
-  // has the same fixture and masks found under `stamp`; for a non-static body's triangle, else
+  // `epoch`) and `fixtures` (`world_fixtures`): each triangle's half taken from another contact
+  // between the same two bodies that has the same fixture and masks found under both; for a
+  // non-static body's triangle, else
   // from any contact of its body with that fixture whose masks still hold (`half_from_body`);
   // else found from the fixture's edge group (`triangle_internal_edges`). A box on a ground finds
   // a ground triangle's masks once for all its fixtures touching it, and a body in a pile finds
   // each of its triangles' masks once for all the bodies it touches.
-  InternalEdges find_internal_edges(std::uint16_t stamp, std::uint8_t epoch) const;
+  InternalEdges find_internal_edges(std::uint16_t stamp, std::uint16_t fixtures,
+                                    std::uint8_t epoch) const;
 
   // Its stamp moved from `seen` (`ContactMemory::internal_edges_stamp`, 0: none) to another. Seen
   // before, with a static body in the pair: its static neighbourhood changed, and the pair's
@@ -95,11 +102,12 @@ class TriangleContact final : public b2Contact {
            m_fixtureB->GetBody()->GetType() == b2_staticBody;
   }
 
-  // Its masks when they hold under install `epoch` as the world is now (found under the stamp it
-  // would have now), else nothing.
+  // Its masks when they hold under install `epoch` as the world is now (found under the stamp and
+  // the fixture count it would have now), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
     const std::uint16_t found = memory_.internal_edges_stamp;
-    if (!memory_.internal_edges_found || found == 0 || found != internal_edges_stamp(epoch)) {
+    if (!memory_.internal_edges_found || found == 0 || found != internal_edges_stamp(epoch) ||
+        memory_.internal_edges_fixtures != world_fixtures()) {
       return std::nullopt;
     }
     return memory_.internal_edges;

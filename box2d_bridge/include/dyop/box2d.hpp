@@ -221,7 +221,8 @@ struct Config {
   /// An empty manifold is kept only while the pose moved less than its judged face separates the
   /// pair beyond the skins' reach, so no new contact is missed; a fast body recomputes every step
   /// (it moves farther than the tolerance); another install (backend or config) and a change of
-  /// the pair's internal-edge masks recompute; a skipped evaluation is never kept. The library's
+  /// the pair's internal-edge masks recompute; a fixture created or destroyed elsewhere in the
+  /// world does not (`ContactMemory::internal_edges_fixtures`); a skipped evaluation is never kept. The library's
   /// methods only: `Backend::Box2D` answers afresh every time, bit-identical to Box2D's own
   /// contact. Counted in `Stats::recycled`. `collide_polygons` never keeps a manifold (it has no contact to keep it
   /// in).
@@ -298,9 +299,8 @@ struct ContactMemory {
   /// world's contact finds them itself (see `internal_edges_stamp`); a caller of
   /// `collide_polygons` sets them.
   InternalEdges internal_edges{};
-  /// A world's contact: what its masks hold under, 0 not yet seen: the install (see `install`),
-  /// the number of fixture proxies of the world (any fixture created or destroyed in the world
-  /// changes it) and the frames of the pair's static bodies, folded into 16 bits. Recorded at the
+  /// A world's contact: what its masks hold under, 0 not yet seen or forgotten: the install (see
+  /// `install`) and the frames of the pair's static bodies, folded into 16 bits. Recorded at the
   /// first answer under it; the masks are found when the rule first needs them under it (see
   /// `internal_edges_found`), from the two fixtures' bodies as they are then. Set to 0 after a
   /// contact between the same two bodies was made or destroyed between steps (a fixture of one of
@@ -310,6 +310,13 @@ struct ContactMemory {
   /// every answer under it was apart beyond the margin, which is the same under any masks (see
   /// `Apart::Gap`): most contacts a broad phase makes never come closer.
   bool internal_edges_found = false;
+  /// A world's contact: the world's count of fixture proxies (its low 16 bits) when
+  /// `internal_edges` were found. A fixture created or destroyed anywhere moves it, and the next
+  /// answer computed afresh finds the masks again; a kept manifold stays (see
+  /// `Config::recycle_distance`): a fixture created or destroyed within the broad phase's reach of
+  /// the pair makes or ends a contact with one of its bodies, which the pair sees at once, and one
+  /// farther away cannot matter before the pair has moved farther than any manifold is kept.
+  std::uint16_t internal_edges_fixtures = 0;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
