@@ -11,7 +11,7 @@
 #   stack-concave rain rain-tall tumbler); a SCENE of the form rain:N is the rain with N falling
 #   triangles (the rain scaling's sizes: rain:100 ... rain:3000). BACKENDS (default "dyop") names
 #   the backends run beside box2d-own; SCENE_FLAGS (e.g. "--recycle 0.005") are given to their
-#   runs; SEED (default 0) is every run's seed, Box2D's own included (chaotic scenes such as
+#   runs; WORLD_FLAGS (e.g. "--spawn-far") to every run, Box2D's own included; SEED (default 0) is every run's seed, Box2D's own included (chaotic scenes such as
 #   stack-concave differ from seed to seed); DYOP (default build/bin/dyop) is the program run,
 #   e.g. another tree's to compare builds.
 #   Columns: instructions and their ratio to box2d-own (x_own). KEEP=DIR keeps callgrind's files
@@ -68,8 +68,8 @@ for scene in "${scenes[@]}"; do
     size=()
     name=$scene
     if [[ $scene == *:* ]]; then name=${scene%%:*}; size=(--falling "${scene#*:}"); fi
-    flags=()
-    if [ "$b" != box2d-own ]; then flags=(${SCENE_FLAGS:-}); fi
+    flags=(${WORLD_FLAGS:-})
+    if [ "$b" != box2d-own ]; then flags+=(${SCENE_FLAGS:-}); fi
     valgrind --tool=callgrind ${CALLGRIND_FLAGS:-} --callgrind-out-file="$f" \
       "${DYOP:-build/bin/dyop}" scene "$name" --runner "$b" --steps "$steps" "${size[@]}" \
       --seed "${SEED:-0}" "${flags[@]}" >/dev/null 2>&1

@@ -139,6 +139,7 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
         c.falling ? make_rain(*c.falling, *runner, c.seed, skips.config)
                   : make_scene(c.scene, *runner, c.seed, skips.config);
     if (c.check_manifolds) scene->check_manifolds();
+    if (c.spawn_far) scene->spawn_far_away();
     for (int i = c.steps.value_or(info->default_steps); i > 0; --i) scene->step();
     if (!c.svg.empty()) final_state = scene->drawing();
     m = scene->metrics();
@@ -201,6 +202,9 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--check-manifolds", args->check_manifolds,
                 "Check every manifold the solver gets against the exact answer (slows the narrow "
                 "phase: for accuracy, not timing)");
+  cmd->add_flag("--spawn-far", args->spawn_far,
+                "Make a body 1.4 km away before every other step and destroy it before the next "
+                "(a world that spawns elsewhere: its fixture count moves at every step)");
   cmd->add_option("--json", args->json, "Write the figures as one JSON object to FILE, or '-'");
   cmd->add_option("--svg", args->svg, "Draw the final state as SVG to FILE, or '-'");
   CLI::Option* falling_option = cmd->add_option(

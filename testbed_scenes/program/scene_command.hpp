@@ -34,6 +34,9 @@ struct SceneCommand {
   /// Check every manifold the solver gets against the exact answer (`Scene::check_manifolds`;
   /// slows the narrow phase).
   bool check_manifolds = false;
+  /// Make and destroy a body far from the scene at alternate steps (`Scene::spawn_far_away`):
+  /// every step sees the world's count of fixtures move, for both runners.
+  bool spawn_far = false;
   std::string json;          ///< empty: none; "-": `out`
   std::string svg;           ///< empty: none; "-": `out`
 };

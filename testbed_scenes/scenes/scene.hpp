@@ -40,7 +40,17 @@ class Scene {
   /// (`SceneMetrics::manifold_errors`). Box2D scenes; the paper scene has no manifolds and ignores
   /// it. Slows the narrow phase: for accuracy runs, never for timing.
   virtual void check_manifolds() {}
+  /// From now on, makes a one-triangle dynamic body far from the scene (`spawn_distance`) before
+  /// every other step and destroys it before the next: a world that spawns and despawns elsewhere
+  /// (shots, debris, a streamed level), whose count of fixtures moves at every step. Nothing of
+  /// the scene touches it, and it is no part of the figures. Box2D scenes; the paper scene ignores
+  /// it.
+  virtual void spawn_far_away() {}
 };
+
+/// Where `Scene::spawn_far_away` makes its body: x = y = this (metres), 1.4 km from the origin,
+/// beyond every scene's reach and within float precision's comfort (0.1 mm there).
+inline constexpr float spawn_distance = 1000.0f;
 
 /// A scene of the catalogue.
 struct SceneInfo {

@@ -1,5 +1,7 @@
 #include "scenes/world_scene.hpp"
 
+#include <box2d/b2_polygon_shape.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -38,7 +40,12 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
   probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D), world_->get());
 }
 
-WorldScene::~WorldScene() { world_.reset(); }
+WorldScene::~WorldScene() {
+  if (spawned_) world_->get().DestroyBody(spawned_);
+  world_.reset();
+}
+
+void WorldScene::spawn_far_away() { spawning_ = true; }
 
 void WorldScene::check_manifolds() {
   if (manifold_check_) return;
@@ -50,6 +57,19 @@ void WorldScene::step() {
   if (build_.before_step) {
     build_.before_step(steps_);
     probe_->fixtures_changed(world_->get());
+  }
+  if (spawning_ && spawned_) {
+    world_->get().DestroyBody(spawned_);
+    spawned_ = nullptr;
+  } else if (spawning_) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(spawn_distance, spawn_distance);
+    spawned_ = world_->get().CreateBody(&def);
+    b2PolygonShape triangle;
+    const b2Vec2 corners[3] = {b2Vec2(0.0f, 0.0f), b2Vec2(1.0f, 0.0f), b2Vec2(0.0f, 1.0f)};
+    triangle.Set(corners, 3);
+    spawned_->CreateFixture(&triangle, 1.0f);
   }
   const bool measured = steps_ > 0;  // step 1's contacts are created inside Step
   const ContactProbe::Updates u = probe_->before_step(world_->get(), errors_);

@@ -66,6 +66,7 @@ class WorldScene : public Scene {
   SceneMetrics metrics() const override;
   Drawing drawing() const override;
   void check_manifolds() override;
+  void spawn_far_away() override;
 
   /// The world, for tests that look inside.
   const World& world() const { return *world_; }
@@ -84,6 +85,8 @@ class WorldScene : public Scene {
   std::vector<float> slider_start_x_;
   std::unique_ptr<ContactProbe> probe_;
   std::unique_ptr<ManifoldCheck> manifold_check_;  // set on the world by `check_manifolds`
+  bool spawning_ = false;        // `spawn_far_away`
+  b2Body* spawned_ = nullptr;    // its body while it lives (not in `World::bodies`)
 
   int steps_ = 0;
   std::vector<double> step_ms_;

@@ -100,6 +100,21 @@ TEST(SceneCli, InternalEdgesTakesOnOrOffAndOffChangesTheSlide) {
   EXPECT_EQ(run("scene slide --runner dyop --internal-edges maybe").status, 1);
 }
 
+// The spawner far away (`--spawn-far`), for both runners: the pyramid's world keeps about as many
+// manifolds as without it, and Box2D's own contact runs it too.
+TEST(SceneCli, SpawnFarRunsEitherRunnerAndThePyramidKeepsItsManifolds) {
+  const auto kept = [](const Outcome& o) {
+    return nlohmann::json::parse(o.out)["recycled"].get<double>();
+  };
+  const Outcome with = run("scene pyramid --runner dyop --steps 60 --spawn-far --json -");
+  const Outcome without = run("scene pyramid --runner dyop --steps 60 --json -");
+  ASSERT_EQ(with.status, 0) << with.err;
+  ASSERT_EQ(without.status, 0) << without.err;
+  EXPECT_GT(kept(without), 0.0);
+  EXPECT_GT(kept(with), 0.9 * kept(without));
+  EXPECT_EQ(run("scene pyramid --runner box2d-own --steps 60 --spawn-far").status, 0);
+}
+
 TEST(SceneCli, Box2DsOwnContactRunsBox2DScenesWithoutPlugInCounters) {
   const Outcome own = run("scene stack --runner box2d-own --steps 30 --json -");
   ASSERT_EQ(own.status, 0) << own.err;
