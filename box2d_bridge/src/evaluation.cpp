@@ -40,22 +40,46 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// True when a world's contact has no masks found under its stamp and the world's fixture count
-// as they are now (see `TriangleContact::internal_edges_stamp` and `world_fixtures`; the rule on).
-// A new stamp is recorded at once, and a contact with a static body then tells the others
+// How far a pair may move after its masks were found, summed with the recycling distance, before
+// a change of the world's fixture count makes it find them again (metres; see
+// `ContactMemory::internal_edges_motion`). Why this: a fixture made or destroyed with no contact
+// to either body of the pair lay farther than the broad phase's reach from it (two fattened
+// boxes, each `b2_aabbExtension` = 0.1 m wider than its fixture: 0.2 m at least), and its edges
+// come within the skins (2 cm) only once the pair moved 0.18 m; half the reach, plus the recycling
+// distance that a kept manifold may have moved unseen, stays clear of it.
+constexpr float masks_reach = b2_aabbExtension;
+
+// True when a world's contact has no masks found under its stamp as it is now (see
+// `TriangleContact::internal_edges_stamp`; the rule on), or they were found before a change of
+// the world's fixture count and the pair has moved since as far as such a change could matter
+// (`masks_reach`; `recycling`: the pose of the last answer afresh). A new stamp is recorded at
+// once, and a contact with a static body then tells the others
 // (`TriangleContact::internal_edges_stamp_moved`); a new fixture count tells nobody (every contact
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
 // contacts a broad phase makes never come within the margin, and a static triangle's masks cost
 // about 11,000 instructions (a query of the world's broad phase and the covering tests).
-bool masks_put_off(const Setting& setting, ContactMemory& memory, const TriangleContact& contact) {
+bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
+                   ContactMemory& memory, const TriangleContact& contact,
+                   const ManifoldRecycling* recycling) {
   const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
   if (memory.internal_edges_stamp != stamp) {
     contact.internal_edges_stamp_moved(memory.internal_edges_stamp);
     memory.internal_edges_stamp = stamp;
     memory.internal_edges_found = false;
-  } else if (memory.internal_edges_found &&
-             memory.internal_edges_fixtures != contact.world_fixtures()) {
-    memory.internal_edges_found = false;
+  } else {
+    notice_fixture_count(memory, contact);
+    if (memory.internal_edges_motion >= 0) {
+      // Since the last answer afresh, which had not seen the count move or followed the motion
+      // already: every evaluation in between kept its manifold (within the recycling distance of
+      // that pose) or was a skip (then the motion is infinite).
+      const float lever = recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius);
+      memory.internal_edges_motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid,
+                                                                    lever, setting.epoch)
+                                                : HUGE_VALF;
+      if (!(memory.internal_edges_motion + setting.config.recycle_distance < masks_reach)) {
+        memory.internal_edges_found = false;
+      }
+    }
   }
   return !memory.internal_edges_found;
 }
@@ -85,7 +109,8 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 }
 
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
-                const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact) {
+                const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
+                const ManifoldRecycling* recycling) {
   Query<float> query;
   query.level = Level::Manifold;
   query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's
@@ -100,12 +125,13 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   // (`collide_polygons`) as given.
   bool put_off = false;
   if (setting.internal_edges) {
-    put_off = contact && masks_put_off(setting, memory, *contact);
+    put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *contact, recycling);
     if (!put_off) query.internal_edges = memory.internal_edges;
   }
   Result<float> r = penetrate(*setting.method, a, b, query, state);
   if (put_off && needs_masks(r, query.margin)) {
     memory.internal_edges_fixtures = contact->world_fixtures();
+    memory.internal_edges_motion = -1;
     memory.internal_edges = contact->find_internal_edges(
         memory.internal_edges_stamp, memory.internal_edges_fixtures, setting.epoch);
     memory.internal_edges_found = true;

@@ -50,9 +50,11 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 // is not apart beyond the skins (it runs the method again with them); nullptr
 // (`collide_polygons`): the caller set them in `memory`. True when it answered and `manifold`
 // holds its answer; false when the method could not answer (`Status::Invalid`) and Box2D's code
-// must.
+// must. `recycling`: the contact's kept pose, as the last answer afresh left it (it bounds how far
+// the pair moved since: see `ContactMemory::internal_edges_motion`), nullptr for none.
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
-                const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact);
+                const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
+                const ManifoldRecycling* recycling);
 
 // Separation of the pair along face `face` (0..2: A's edge, 3..5: B's; frames as in
 // `b_in_a`, B's body frame given in A's), with the other triangle's whole support: a lower bound
@@ -90,6 +92,18 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
   return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
 }
 
+// A world's contact whose masks were found under the fixture count `ContactMemory::
+// internal_edges_fixtures` sees the count as it is now: once it moved, the pair's motion is
+// followed from then on (`internal_edges_motion` from below 0 to 0), whatever the count does
+// after (it may come back to its old value by other changes). At every evaluation that may read
+// the masks: a kept manifold and an answer afresh.
+inline void notice_fixture_count(ContactMemory& memory, const TriangleContact& contact) {
+  if (memory.internal_edges_fixtures != contact.world_fixtures() &&
+      memory.internal_edges_motion < 0 && memory.internal_edges_found) {
+    memory.internal_edges_motion = 0;
+  }
+}
+
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
 // (their stamp moved, or they were forgotten) recomputes; a change of the world's fixture count
@@ -97,29 +111,32 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
 // far from the pair cannot reach it within the distance a manifold is kept, and one near it makes
 // or ends a contact with one of its bodies, which forgets the masks.
 inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
-                           const ContactMemory& memory, const ManifoldRecycling& recycling,
+                           ContactMemory& memory, const ManifoldRecycling& recycling,
                            const TriangleContact* contact, float margin) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
   if (!recycling.keeps(b_in_a, p.b.m_centroid, recycle_lever(memory.radius_sum, margin),
                        setting.epoch)) {
     return false;
   }
-  return !setting.internal_edges || !contact ||
-         memory.internal_edges_stamp == contact->internal_edges_stamp(setting.epoch);
+  if (!setting.internal_edges || !contact) return true;
+  if (memory.internal_edges_stamp != contact->internal_edges_stamp(setting.epoch)) return false;
+  notice_fixture_count(memory, *contact);
+  return true;
 }
 
 // How far a manifold the method just computed may move before a recompute: the setting's
 // distance for one with points (a share of it for a pair with a static body: `static_pair_share`);
 // for an empty one, also no farther than its judged face's separation beyond what a manifold
-// reaches, so that no new contact is missed (see `face_reach`).
+// reaches, so that no new contact is missed (see `face_reach`); never below 0 (that marks a skip:
+// `ManifoldRecycling::lose_pose`).
 inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, const PolygonPair& p,
                            const b2Transform& b_in_a, const ContactMemory& memory, float margin,
                            bool static_pair) {
   const float distance = setting.config.recycle_distance * (static_pair ? static_pair_share : 1);
   if (manifold.pointCount > 0) return distance;
   if (memory.last_face < 0) return 0;
-  return std::min(distance, face_separation(memory.last_face, p.a, p.b, b_in_a) -
-                                face_reach(margin));
+  return std::max(0.0f, std::min(distance, face_separation(memory.last_face, p.a, p.b, b_in_a) -
+                                               face_reach(margin)));
 }
 
 // An evaluation of a triangle pair under an install runs three steps, each counted: a kept
@@ -128,11 +145,11 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
 // each reached by a jump, so that the common outcomes (a kept manifold in a resting scene, a
 // skip in a rain) pay no register saves for the rare ones.
 
-// Step 1: true when the world's contact keeps the manifold in `manifold` (see `keeps_manifold`);
-// otherwise its kept pose is forgotten.
+// Step 1: true when the world's contact keeps the manifold in `manifold` (see `keeps_manifold`).
+// Otherwise its pose stays until the answer afresh replaces it, or a skip loses it.
 [[gnu::always_inline]] inline bool kept(const b2Manifold& manifold, const Setting& setting,
-                                        const PolygonPair& p, const ContactMemory& memory,
-                                        ManifoldRecycling& recycling,
+                                        const PolygonPair& p, ContactMemory& memory,
+                                        const ManifoldRecycling& recycling,
                                         const TriangleContact* contact) {
   // Only a method's run remembers a pose, so the shapes are triangles; an uninstall keeps the
   // epoch, hence the method's check.
@@ -144,7 +161,6 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
     if (manifold.pointCount > 0) count.manifolds.add();
     return true;
   }
-  recycling.forget();
   return false;
 }
 
@@ -180,7 +196,7 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
       validate_triangles(p.a, p.b, memory);
     }
     if (memory.shapes == ContactMemory::Shapes::Triangles &&
-        run_method(manifold, setting, p, b_in_a, memory, contact)) {
+        run_method(manifold, setting, p, b_in_a, memory, contact, recycling)) {
       if (manifold->pointCount > 0) count.manifolds.add();
       if (recycling && setting.recycles()) {
         const float slack =
@@ -212,8 +228,12 @@ template <class Afresh>
   const std::optional<Skip> skip = skip_of(setting, p, b_in_a, memory);
   if (!skip) return afresh(b_in_a);
   manifold->pointCount = 0;
-  if (recycling && setting.recycles() && setting.never_recompute) {
-    recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
+  if (recycling) {
+    if (setting.never_recompute && setting.method) {
+      recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
+    } else {
+      recycling->lose_pose();
+    }
   }
   ThreadCounters& count = counters();
   count.skipped[static_cast<int>(*setting.backend)][static_cast<int>(*skip)].add();

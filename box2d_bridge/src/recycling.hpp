@@ -49,11 +49,14 @@ constexpr float static_pair_share = 0.2f;
 struct ManifoldRecycling {
   b2Rot q;                 // B's body frame in A's when the manifold was computed: rotation
   b2Vec2 centroid{0, 0};   // ... and B's centroid then, in A's frame (b2MulT(xf_a, xf_b) applied)
-  float slack = 0;         // how far (motion, metres) the pose may move before a recompute; 0: never
+  // How far (motion, metres) the pose may move before a recompute; 0: never; below 0: an
+  // evaluation since was skipped (`lose_pose`), so the pose is not the pair's last.
+  float slack = 0;
   std::uint8_t epoch = 0;  // the install the manifold was computed under (`Setting::epoch`)
 
-  // Nothing to keep: the next evaluation computes.
-  void forget() { slack = 0; }
+  // An evaluation skipped the pair (nothing computed, nothing kept): where it went since the pose
+  // is unknown.
+  void lose_pose() { slack = -1; }
 
   // Remembers the pose `b_in_a` (B's centroid in its body frame: `centroid_b`) of a manifold just
   // computed under install `epoch`, which may be kept while it moves less than `slack` (≤ 0:
@@ -79,6 +82,18 @@ struct ManifoldRecycling {
     const float room = slack - std::abs(sin_turn) * lever;
     if (!(room > 0)) return false;
     return (b2Mul(b_in_a, centroid_b) - centroid).LengthSquared() < room * room;
+  }
+
+  // How far the pair has moved from the remembered pose to `b_in_a` at most (the motion of the
+  // file's head), or infinity when no pose was remembered under install `install_epoch`, an
+  // evaluation since was skipped, or the turn is beyond `recycle_cosine` (where the lever no
+  // longer bounds it).
+  float motion(const b2Transform& b_in_a, const b2Vec2& centroid_b, float lever,
+               std::uint8_t install_epoch) const {
+    const float cos_turn = q.c * b_in_a.q.c + q.s * b_in_a.q.s;
+    if (slack < 0 || epoch != install_epoch || !(cos_turn >= recycle_cosine)) return HUGE_VALF;
+    const float sin_turn = q.c * b_in_a.q.s - q.s * b_in_a.q.c;
+    return (b2Mul(b_in_a, centroid_b) - centroid).Length() + std::abs(sin_turn) * lever;
   }
 };
 

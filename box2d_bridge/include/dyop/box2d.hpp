@@ -311,12 +311,18 @@ struct ContactMemory {
   /// `Apart::Gap`): most contacts a broad phase makes never come closer.
   bool internal_edges_found = false;
   /// A world's contact: the world's count of fixture proxies (its low 16 bits) when
-  /// `internal_edges` were found. A fixture created or destroyed anywhere moves it, and the next
-  /// answer computed afresh finds the masks again; a kept manifold stays (see
-  /// `Config::recycle_distance`): a fixture created or destroyed within the broad phase's reach of
-  /// the pair makes or ends a contact with one of its bodies, which the pair sees at once, and one
-  /// farther away cannot matter before the pair has moved farther than any manifold is kept.
+  /// `internal_edges` were found. A fixture created or destroyed within the broad phase's reach of
+  /// the pair makes or ends a contact with one of its bodies, which the pair sees at once; one
+  /// farther away moves only this count, and cannot matter before the pair has moved toward it
+  /// (see `internal_edges_motion`). So a kept manifold stays (see `Config::recycle_distance`), and
+  /// an answer computed afresh finds the masks again only once the pair has moved too far since.
   std::uint16_t internal_edges_fixtures = 0;
+  /// A world's contact: how far the pair has moved since the world's fixture count first moved
+  /// from `internal_edges_fixtures` (metres, a bound: the recycling motion summed over the answers
+  /// computed afresh since the last that had not seen it move, each evaluation in between having
+  /// kept its manifold); infinity once one was skipped (where the pair went then is unknown) or
+  /// nothing followed the pose (recycling off); below 0 while the count has not moved.
+  float internal_edges_motion = -1;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
