@@ -153,7 +153,7 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   std::optional<InternalEdges> b;
   for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
     if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found ||
-        c.memory_.internal_edges_fixtures != fixtures) {
+        c.memory_.internal_edges_fixtures != fixtures || !(c.memory_.internal_edges_motion < 0)) {
       return true;
     }
     const InternalEdges m = c.memory_.internal_edges;

@@ -77,8 +77,9 @@ class TriangleContact final : public b2Contact {
 
   // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp` (install
   // `epoch`) and `fixtures` (`world_fixtures`): each triangle's half taken from another contact
-  // between the same two bodies that has the same fixture and masks found under both; for a
-  // non-static body's triangle, else
+  // between the same two bodies that has the same fixture and masks found under both (the count
+  // never seen to move since: both contacts were evaluated at the same steps, and saw the same
+  // counts); for a non-static body's triangle, else
   // from any contact of its body with that fixture whose masks still hold (`half_from_body`);
   // else found from the fixture's edge group (`triangle_internal_edges`). A box on a ground finds
   // a ground triangle's masks once for all its fixtures touching it, and a body in a pile finds
@@ -103,11 +104,13 @@ class TriangleContact final : public b2Contact {
   }
 
   // Its masks when they hold under install `epoch` as the world is now (found under the stamp and
-  // the fixture count it would have now), else nothing.
+  // the fixture count it would have now, and the count never seen to move since: it may have
+  // come back by other changes), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
     const std::uint16_t found = memory_.internal_edges_stamp;
     if (!memory_.internal_edges_found || found == 0 || found != internal_edges_stamp(epoch) ||
-        memory_.internal_edges_fixtures != world_fixtures()) {
+        memory_.internal_edges_fixtures != world_fixtures() ||
+        !(memory_.internal_edges_motion < 0)) {
       return std::nullopt;
     }
     return memory_.internal_edges;

@@ -228,6 +228,37 @@ TEST(Recycling, AFarChangeOfMasksIsSeenOnceThePairMovedTowardIt) {
   uninstall();
 }
 
+// The same far change, with the world's fixture count brought back to what it was by another far
+// change a step later (a far body destroyed): the pair saw the count move once, and follows its
+// motion from then on, so it still finds its masks again once it moved toward the change.
+TEST(Recycling, AFarChangeIsSeenAfterAnotherBringsTheFixtureCountBack) {
+  ASSERT_TRUE(install(Backend::Dyop, recycling(0.01f)).ok());
+  RestingBox r;
+  b2Body* far = add_body(r.world, b2_staticBody, b2Vec2(100.0f, 100.0f));
+  add_triangle(far, b2Vec2(0.0f, 0.0f), b2Vec2(1.0f, 0.0f), b2Vec2(0.0f, 1.0f));
+  // The box's masks found afresh under the count with `far`.
+  r.box->SetTransform(r.box->GetPosition() + b2Vec2(0.15f, 0.0f), r.box->GetAngle());
+  for (int i = 0; i < 10; ++i) r.world.step();
+  const int fixtures = r.world->GetProxyCount();
+  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  EXPECT_EQ(r.kept_in_one_step(), 2u) << "nothing near the box changed";
+  r.world->DestroyBody(far);
+  ASSERT_EQ(r.world->GetProxyCount(), fixtures);
+  EXPECT_EQ(r.kept_in_one_step(), 2u);
+  r.box->SetTransform(r.box->GetPosition() + b2Vec2(-0.15f, 0.0f), r.box->GetAngle());
+  EXPECT_EQ(r.kept_in_one_step(), 0u) << "moved beyond the distance";
+  int checked = 0;
+  for (b2Contact* c = r.world->GetContactList(); c; c = c->GetNext()) {
+    const std::optional<InternalEdges> held = contact_internal_edges(*c);
+    if (!held) continue;
+    EXPECT_EQ(*held, InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
+                                         triangle_internal_edges(*c->GetFixtureB())));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2) << "both of the box's contacts with the ground hold current masks";
+  uninstall();
+}
+
 // A pair with a static body keeps within a fifth of the distance (a body sinking deeper into
 // static ground meets Box2D's time-of-impact pass): the box moved 4 mm between steps recomputes
 // on a static ground (kept within 2 mm) and is kept on a kinematic one at rest (within 10 mm).
