@@ -198,8 +198,10 @@ struct Config {
   /// make no edge internal. A contact finds its two triangles' masks when the rule first needs
   /// them (its pair is not skipped), from the fixtures as they are then (the group's triangles
   /// near each one, from the world's broad phase), and keeps them in its `ContactMemory`; it finds
-  /// them again after fixtures of its world or the frames of its static bodies changed
-  /// (`ContactMemory::internal_edges_stamp`), and tells its moving body's other contacts with
+  /// them again after the frames of its static bodies changed (`ContactMemory::
+  /// internal_edges_stamp`), after fixtures near it changed (a contact made or ended), and after
+  /// fixtures elsewhere in its world changed once it has moved toward them
+  /// (`ContactMemory::internal_edges_motion`), and tells its moving body's other contacts with
   /// static bodies to do the same (`forget_internal_edges` in `dyop/box2d_internal_edges.hpp`
   /// for what it cannot see). The other backends ignore it and never look. Off: the world is
   /// bit-identical to Box2D's own handling of each fixture alone, as the plug-in was without the
