@@ -40,19 +40,10 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// How far a pair may move after its masks were found, summed with the recycling distance, before
-// a change of the world's fixture count makes it find them again (metres; see
-// `ContactMemory::internal_edges_motion`). Why this: a fixture made or destroyed with no contact
-// to either body of the pair lay farther than the broad phase's reach from it (two fattened
-// boxes, each `b2_aabbExtension` = 0.1 m wider than its fixture: 0.2 m at least), and its edges
-// come within the skins (2 cm) only once the pair moved 0.18 m; half the reach, plus the recycling
-// distance that a kept manifold may have moved unseen, stays clear of it.
-constexpr float masks_reach = b2_aabbExtension;
-
 // True when a world's contact has no masks found under its stamp as it is now (see
 // `TriangleContact::internal_edges_stamp`; the rule on), or they were found before a change of
 // the world's fixture count and the pair has moved since as far as such a change could matter
-// (`masks_reach`; `recycling`: the pose of the last answer afresh). A new stamp is recorded at
+// (`masks_still_hold`; `recycling`: the pose of the last answer afresh). A new stamp is recorded at
 // once, and a contact with a static body then tells the others
 // (`TriangleContact::internal_edges_stamp_moved`); a new fixture count tells nobody (every contact
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
@@ -76,9 +67,7 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
       memory.internal_edges_motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid,
                                                                     lever, setting.epoch)
                                                 : HUGE_VALF;
-      if (!(memory.internal_edges_motion + setting.config.recycle_distance < masks_reach)) {
-        memory.internal_edges_found = false;
-      }
+      if (!masks_still_hold(memory, setting)) memory.internal_edges_found = false;
     }
   }
   return !memory.internal_edges_found;

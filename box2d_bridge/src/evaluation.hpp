@@ -92,6 +92,24 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
   return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
 }
 
+// How far a pair may have moved since it first saw the world's fixture count move, before it
+// finds its masks again (metres; see `ContactMemory::internal_edges_motion`). Why this: a fixture
+// made or destroyed with no contact to either body of the pair had no fattened broad-phase box
+// overlapping theirs. Box2D fattens a box by `b2_aabbExtension` (0.1 m) on every side when it
+// (re)inserts it, and a moving body may then travel to the edge of its own, so only the other's
+// margin is sure: the fixture lay more than 0.1 m from the pair, and its edges come within the
+// skins (2 cm) only once the pair moved 0.08 m. Half the margin stays clear of that.
+constexpr float masks_reach = 0.5f * b2_aabbExtension;
+
+// True while a contact that follows its motion (`ContactMemory::internal_edges_motion` ≥ 0) may
+// keep its masks: the motion summed so far, plus twice the recycling distance (a kept manifold's
+// pose may lie that far from the pose at the change, before it and after the last answer
+// afresh), is below `masks_reach`. Always true for one that does not follow.
+inline bool masks_still_hold(const ContactMemory& memory, const Setting& setting) {
+  return memory.internal_edges_motion < 0 ||
+         memory.internal_edges_motion + 2 * setting.config.recycle_distance < masks_reach;
+}
+
 // A world's contact whose masks were found under the fixture count `ContactMemory::
 // internal_edges_fixtures` sees the count as it is now: once it moved, the pair's motion is
 // followed from then on (`internal_edges_motion` from below 0 to 0), whatever the count does
@@ -121,7 +139,7 @@ inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b
   if (!setting.internal_edges || !contact) return true;
   if (memory.internal_edges_stamp != contact->internal_edges_stamp(setting.epoch)) return false;
   notice_fixture_count(memory, *contact);
-  return true;
+  return masks_still_hold(memory, setting);
 }
 
 // How far a manifold the method just computed may move before a recompute: the setting's

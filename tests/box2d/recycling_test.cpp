@@ -203,7 +203,7 @@ TEST(Recycling, ASpawnerFarAwayKeepsAsManyManifoldsAsWithoutIt) {
 
 // A triangle added to the ground far from the box, sharing the end of the ground's top edge (so
 // that the ground triangle's masks change there, 3.5 m from the box): the kept manifolds stay,
-// and once the box has moved as far as such a change could matter (0.1 m; here 0.15 m, as a
+// and once the box has moved as far as such a change could matter (0.05 m; here 0.15 m, as a
 // body sliding toward it would), its contacts answer with the masks as the world now is.
 TEST(Recycling, AFarChangeOfMasksIsSeenOnceThePairMovedTowardIt) {
   ASSERT_TRUE(install(Backend::Dyop, recycling(0.01f)).ok());
