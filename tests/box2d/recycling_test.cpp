@@ -228,6 +228,19 @@ TEST(Recycling, AFarChangeOfMasksIsSeenOnceThePairMovedTowardIt) {
   uninstall();
 }
 
+// With a recycling distance of 5 cm, a kept manifold may move 10 cm around the pose at a far
+// change, beyond what the change's distance allows (0.05 m): the box's contacts recompute (and
+// find their masks again) at the first step after it, then keep again.
+TEST(Recycling, WithALargeDistanceAFarChangeRecomputesAtOnce) {
+  ASSERT_TRUE(install(Backend::Dyop, recycling(0.05f)).ok());
+  RestingBox r;
+  ASSERT_EQ(r.kept_in_one_step(), 2u);
+  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  EXPECT_EQ(r.kept_in_one_step(), 0u);
+  EXPECT_EQ(r.kept_in_one_step(), 2u);
+  uninstall();
+}
+
 // The same far change, with the world's fixture count brought back to what it was by another far
 // change a step later (a far body destroyed): the pair saw the count move once, and follows its
 // motion from then on, so it still finds its masks again once it moved toward the change.
