@@ -125,9 +125,8 @@ inline void notice_fixture_count(ContactMemory& memory, const TriangleContact& c
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
 // (their stamp moved, or they were forgotten) recomputes; a change of the world's fixture count
-// alone does not (see `ContactMemory::internal_edges_fixtures`): a fixture created or destroyed
-// far from the pair cannot reach it within the distance a manifold is kept, and one near it makes
-// or ends a contact with one of its bodies, which forgets the masks.
+// alone recomputes only once the pair may have moved toward it (`masks_still_hold`): one near
+// the pair makes or ends a contact with one of its bodies, which forgets the masks at once.
 inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
                            ContactMemory& memory, const ManifoldRecycling& recycling,
                            const TriangleContact* contact, float margin) {

@@ -68,8 +68,8 @@ class TriangleContact final : public b2Contact {
   // internal_edges_fixtures`). Why: it is the world's own and moves whenever a fixture of the
   // world is created or destroyed (a fixture added next to a triangle, or one taken away from
   // under a body resting elsewhere on its neighbour, changes that neighbour's masks), in O(1). A
-  // pair that moves only within the recycling distance cannot reach such a change far from it: a
-  // kept manifold does not ask.
+  // change far from a pair matters only once the pair has moved toward it: from then on the pair
+  // follows its motion (`ContactMemory::internal_edges_motion`).
   std::uint16_t world_fixtures() const {
     return static_cast<std::uint16_t>(
         m_fixtureA->GetBody()->GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
