@@ -201,6 +201,20 @@ TEST(Recycling, ASpawnerFarAwayKeepsAsManyManifoldsAsWithoutIt) {
   }
 }
 
+// The contacts of `world` that report masks (`contact_internal_edges`), each checked to hold those
+// of its two fixtures found afresh.
+int contacts_holding_masks_found_afresh(World& world) {
+  int checked = 0;
+  for (b2Contact* c = world->GetContactList(); c; c = c->GetNext()) {
+    const std::optional<InternalEdges> held = contact_internal_edges(*c);
+    if (!held) continue;
+    EXPECT_EQ(*held, InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
+                                         triangle_internal_edges(*c->GetFixtureB())));
+    ++checked;
+  }
+  return checked;
+}
+
 // A triangle added to the ground far from the box, sharing the end of the ground's top edge (so
 // that the ground triangle's masks change there, 3.5 m from the box): the kept manifolds stay,
 // and once the box has moved as far as such a change could matter (0.05 m; here 0.15 m, as a
@@ -216,15 +230,8 @@ TEST(Recycling, AFarChangeOfMasksIsSeenOnceThePairMovedTowardIt) {
   EXPECT_EQ(r.kept_in_one_step(), 2u) << "nothing near the box changed";
   r.box->SetTransform(r.box->GetPosition() + b2Vec2(-0.15f, 0.0f), r.box->GetAngle());
   EXPECT_EQ(r.kept_in_one_step(), 0u) << "moved beyond the distance";
-  int checked = 0;
-  for (b2Contact* c = r.world->GetContactList(); c; c = c->GetNext()) {
-    const std::optional<InternalEdges> held = contact_internal_edges(*c);
-    if (!held) continue;
-    EXPECT_EQ(*held, InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
-                                         triangle_internal_edges(*c->GetFixtureB())));
-    ++checked;
-  }
-  EXPECT_EQ(checked, 2) << "both of the box's contacts with the ground hold current masks";
+  EXPECT_EQ(contacts_holding_masks_found_afresh(r.world), 2)
+      << "both of the box's contacts with the ground hold current masks";
   uninstall();
 }
 
@@ -260,15 +267,8 @@ TEST(Recycling, AFarChangeIsSeenAfterAnotherBringsTheFixtureCountBack) {
   EXPECT_EQ(r.kept_in_one_step(), 2u);
   r.box->SetTransform(r.box->GetPosition() + b2Vec2(-0.15f, 0.0f), r.box->GetAngle());
   EXPECT_EQ(r.kept_in_one_step(), 0u) << "moved beyond the distance";
-  int checked = 0;
-  for (b2Contact* c = r.world->GetContactList(); c; c = c->GetNext()) {
-    const std::optional<InternalEdges> held = contact_internal_edges(*c);
-    if (!held) continue;
-    EXPECT_EQ(*held, InternalEdges::pair(triangle_internal_edges(*c->GetFixtureA()),
-                                         triangle_internal_edges(*c->GetFixtureB())));
-    ++checked;
-  }
-  EXPECT_EQ(checked, 2) << "both of the box's contacts with the ground hold current masks";
+  EXPECT_EQ(contacts_holding_masks_found_afresh(r.world), 2)
+      << "both of the box's contacts with the ground hold current masks";
   uninstall();
 }
 
