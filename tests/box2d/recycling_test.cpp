@@ -125,6 +125,15 @@ struct RestingBox {
     box->SetSleepingAllowed(false);
     for (int i = 0; i < 2 * kStepsPerSecond; ++i) world.step();
   }
+  // A triangle added to the ground 3.5 m from the box, covering the ground triangle's left edge
+  // from below: that edge becomes internal, a change of masks far from the box.
+  void add_far_neighbour() {
+    add_triangle(ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  }
+  // The box moved by `dx` along the ground (metres).
+  void move_box(float dx) {
+    box->SetTransform(box->GetPosition() + b2Vec2(dx, 0.0f), box->GetAngle());
+  }
   // Evaluations kept in one step.
   std::uint64_t kept_in_one_step() {
     const std::uint64_t before = stats().recycled;
@@ -225,10 +234,10 @@ TEST(Recycling, AFarChangeOfMasksIsSeenOnceThePairMovedTowardIt) {
   ASSERT_EQ(r.kept_in_one_step(), 2u);
   const b2Fixture* ground = r.ground->GetFixtureList();
   const InternalEdges before = triangle_internal_edges(*ground);
-  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  r.add_far_neighbour();
   ASSERT_FALSE(triangle_internal_edges(*ground) == before) << "the ground triangle's masks moved";
   EXPECT_EQ(r.kept_in_one_step(), 2u) << "nothing near the box changed";
-  r.box->SetTransform(r.box->GetPosition() + b2Vec2(-0.15f, 0.0f), r.box->GetAngle());
+  r.move_box(-0.15f);
   EXPECT_EQ(r.kept_in_one_step(), 0u) << "moved beyond the distance";
   EXPECT_EQ(contacts_holding_masks_found_afresh(r.world), 2)
       << "both of the box's contacts with the ground hold current masks";
@@ -242,7 +251,7 @@ TEST(Recycling, WithALargeDistanceAFarChangeRecomputesAtOnce) {
   ASSERT_TRUE(install(Backend::Dyop, recycling(0.05f)).ok());
   RestingBox r;
   ASSERT_EQ(r.kept_in_one_step(), 2u);
-  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  r.add_far_neighbour();
   EXPECT_EQ(r.kept_in_one_step(), 0u);
   EXPECT_EQ(r.kept_in_one_step(), 2u);
   uninstall();
@@ -257,15 +266,15 @@ TEST(Recycling, AFarChangeIsSeenAfterAnotherBringsTheFixtureCountBack) {
   b2Body* far = add_body(r.world, b2_staticBody, b2Vec2(100.0f, 100.0f));
   add_triangle(far, b2Vec2(0.0f, 0.0f), b2Vec2(1.0f, 0.0f), b2Vec2(0.0f, 1.0f));
   // The box's masks found afresh under the count with `far`.
-  r.box->SetTransform(r.box->GetPosition() + b2Vec2(0.15f, 0.0f), r.box->GetAngle());
+  r.move_box(0.15f);
   for (int i = 0; i < 10; ++i) r.world.step();
   const int fixtures = r.world->GetProxyCount();
-  add_triangle(r.ground, b2Vec2(-4.0f, 0.0f), b2Vec2(-4.0f, -1.0f), b2Vec2(-6.0f, -1.0f));
+  r.add_far_neighbour();
   EXPECT_EQ(r.kept_in_one_step(), 2u) << "nothing near the box changed";
   r.world->DestroyBody(far);
   ASSERT_EQ(r.world->GetProxyCount(), fixtures);
   EXPECT_EQ(r.kept_in_one_step(), 2u);
-  r.box->SetTransform(r.box->GetPosition() + b2Vec2(-0.15f, 0.0f), r.box->GetAngle());
+  r.move_box(-0.15f);
   EXPECT_EQ(r.kept_in_one_step(), 0u) << "moved beyond the distance";
   EXPECT_EQ(contacts_holding_masks_found_afresh(r.world), 2)
       << "both of the box's contacts with the ground hold current masks";
@@ -280,7 +289,7 @@ TEST(Recycling, APairWithAStaticBodyKeepsWithinAFifthOfTheDistance) {
   for (const b2BodyType ground : {b2_staticBody, b2_kinematicBody}) {
     RestingBox r(ground);
     ASSERT_EQ(r.kept_in_one_step(), 2u);
-    r.box->SetTransform(r.box->GetPosition() + b2Vec2(0.004f, 0.0f), r.box->GetAngle());
+    r.move_box(0.004f);
     EXPECT_EQ(r.kept_in_one_step(), ground == b2_staticBody ? 0u : 2u)
         << (ground == b2_staticBody ? "static" : "kinematic") << " ground";
   }
