@@ -8,7 +8,10 @@
 # does; they ignore cache misses and mispredictions (callgrind's simulations count those:
 # CALLGRIND_FLAGS="--cache-sim=yes --branch-sim=yes").
 #   scripts/collide_instructions.sh [STEPS] [SCENE...]   (defaults: 150 steps; pyramid
-#   stack-concave rain rain-tall tumbler); a SCENE of the form rain:N is the rain with N falling
+#   stack-concave rain rain-tall tumbler). STEPS "full" runs each scene for its own length (the
+#   catalogue's full run, what `dyop scene` and `dyop compare` run: 250 to 900 steps, e.g. rain
+#   900, rain-tall 250); 150 steps are the first 2.5 s, mostly bodies falling, where fewer
+#   manifolds are kept than over a whole run. A SCENE of the form rain:N is the rain with N falling
 #   triangles (the rain scaling's sizes: rain:100 ... rain:3000). BACKENDS (default "dyop") names
 #   the backends run beside box2d-own; SCENE_FLAGS (e.g. "--recycle 0.005") are given to their
 #   runs; WORLD_FLAGS (e.g. "--spawn-far") to every run, Box2D's own included; SEED (default 0) is every run's seed, Box2D's own included (chaotic scenes such as
@@ -70,8 +73,10 @@ for scene in "${scenes[@]}"; do
     if [[ $scene == *:* ]]; then name=${scene%%:*}; size=(--falling "${scene#*:}"); fi
     flags=(${WORLD_FLAGS:-})
     if [ "$b" != box2d-own ]; then flags+=(${SCENE_FLAGS:-}); fi
+    length=(--steps "$steps")
+    if [ "$steps" = full ]; then length=(); fi
     valgrind --tool=callgrind ${CALLGRIND_FLAGS:-} --callgrind-out-file="$f" \
-      "${DYOP:-build/bin/dyop}" scene "$name" --runner "$b" --steps "$steps" "${size[@]}" \
+      "${DYOP:-build/bin/dyop}" scene "$name" --runner "$b" "${length[@]}" "${size[@]}" \
       --seed "${SEED:-0}" "${flags[@]}" >/dev/null 2>&1
     collide[$b]=$(inclusive "$f" 'b2ContactManager::Collide\(\)')
     toi[$b]=$(inclusive "$f" 'b2World::SolveTOI\(')
