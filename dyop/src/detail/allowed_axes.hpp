@@ -87,7 +87,11 @@ bool edge_touched(const PairFrame<T>& f, int k, T tol) {
 
 // One triangle's least usable axis (`first`: 0 for A's, 3 for B's), trying its axes from the
 // least overlap up (first on ties, as `argmin3`), so that the usual pair checks one. `reached`:
-// whether the other triangle reaches any of its edges (exact when none is usable).
+// whether the other triangle reaches any of its edges (true when an axis is usable; exact when
+// none is). The masks are read first: a pair is certified here because its least axis is refused,
+// and whether the other triangle reaches a refused edge matters only when no allowed one is
+// reached. Callgrind, Collide, against reaching every edge first: slide 96.0 M → 93.3 M and
+// tiles 218.5 M → 214.7 M (full runs), the pyramid 38.2 M → 37.6 M (150 steps).
 template <class T>
 int least_usable(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6>& overlap,
                  int first, bool& reached) {
@@ -99,11 +103,17 @@ int least_usable(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6
   if (before(order[1], order[2])) std::swap(order[1], order[2]);
   if (before(order[0], order[1])) std::swap(order[0], order[1]);
   const T reach = q.margin + touching_band(f);  // the manifold's margin and the touching band
+  std::array<bool, 3> refused{};
+  for (int i = 0; i < 3; ++i) {
+    refused[i] = !axis_allowed(f, q, order[i]);
+    if (!refused[i] && edge_touched(f, order[i], reach)) {
+      reached = true;
+      return order[i];
+    }
+  }
   reached = false;
-  for (const int k : order) {
-    const bool touched = edge_touched(f, k, reach);
-    reached = reached || touched;
-    if (touched && axis_allowed(f, q, k)) return k;
+  for (int i = 0; i < 3 && !reached; ++i) {
+    reached = refused[i] && edge_touched(f, order[i], reach);
   }
   return -1;
 }
