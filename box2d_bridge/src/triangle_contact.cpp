@@ -23,19 +23,30 @@ namespace {
 constexpr std::size_t allocator_class_below = 224;
 constexpr std::size_t allocator_class = 256;
 
-// Calls `visit(TriangleContact&)` for the plug-in's contacts between bodies `p` and `q` until it
-// returns false, walking the shorter of the two bodies' contact lists: a ground's may be long, a
-// falling body's is short.
-template <class Visit>
-void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) {
+// The body of `p` and `q` whose contact list is the shorter to walk for their contacts with each
+// other: the non-static one when the other is static (a ground's list holds every body on it, a
+// moving body's is short), else the shorter, found by stepping both lists together. Callgrind,
+// full runs, Collide, against stepping them always: slide 93.3 M → 91.8 M, tiles 214.7 M →
+// 214.1 M. (Comparing fixtures before reading a contact's type, in the lending walk, did not
+// pay: tiles +0.6 %.)
+const b2Body& shorter_contact_list(const b2Body& p, const b2Body& q) {
+  if (p.GetType() == b2_staticBody) return q;
+  if (q.GetType() == b2_staticBody) return p;
   const b2ContactEdge* x = p.GetContactList();
   const b2ContactEdge* y = q.GetContactList();
   while (x && y) {
     x = x->next;
     y = y->next;
   }
-  const b2Body& walked = x ? q : p;
-  const b2Body& other = x ? p : q;
+  return x ? q : p;
+}
+
+// Calls `visit(TriangleContact&)` for the plug-in's contacts between bodies `p` and `q` until it
+// returns false, walking the shorter of the two bodies' contact lists (`shorter_contact_list`).
+template <class Visit>
+void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) {
+  const b2Body& walked = shorter_contact_list(p, q);
+  const b2Body& other = &walked == &p ? q : p;
   for (const b2ContactEdge* e = walked.GetContactList(); e; e = e->next) {
     if (e->other != &other) continue;
     if (TriangleContact* c = TriangleContact::ours(e->contact); c && !visit(*c)) return;
