@@ -198,14 +198,16 @@ std::uint8_t on_own_lines(const Line (&lines)[3], const b2Vec2& x, float tol) {
                                    within(lines[2], x, tol) << 2);
 }
 
-// Whether the edges among `edges` running the other way along `line` (both ends within `tol` of
-// it: their triangles lie on its other side) cover the line just before the parameter `t`
-// (reaching `t` within `tol`), and just after it. Only what `want_before` and `want_after` ask
-// for is looked for; the walk stops once that is found.
+// Whether a line is covered just before a point of it and just after it.
 struct StretchesCovered {
   bool before = false;
   bool after = false;
 };
+
+// Whether the edges among `edges` running the other way along `line` (both ends within `tol` of
+// it: their triangles lie on its other side) cover the line just before the parameter `t`
+// (reaching `t` within `tol`), and just after it. Only what `want_before` and `want_after` ask
+// for is looked for; the walk stops once that is found.
 StretchesCovered opposite_cover_next_to(const std::vector<Segment>& edges, const Line& line,
                                         float t, float tol, bool want_before, bool want_after) {
   StretchesCovered covered;
