@@ -20,10 +20,13 @@
 #include "program/pair_csv.hpp"
 #include "program/pairs_command.hpp"
 #include "workloads/raw_pair.hpp"
+#include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop::workloads {
 namespace {
+
+using test_support::all_finite;
 
 using V = Vec2<double>;
 using Tri = std::array<V, 3>;
@@ -78,17 +81,6 @@ std::vector<Tri> partners(const V& o, double angle) {
 
 Tri rounded_tri(Precision p, const Tri& t) { return rounded_to(p, RawPair{t, t}).a; }
 
-// Every field a level promises is finite.
-template <class T>
-bool finite(const Result<T>& r) {
-  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite() &&
-            r.witness_a.allFinite() && r.witness_b.allFinite() && r.manifold.normal.allFinite();
-  for (int i = 0; i < r.manifold.point_count; ++i) {
-    ok = ok && r.manifold.points[i].point.allFinite() && std::isfinite(r.manifold.points[i].separation);
-  }
-  return ok;
-}
-
 template <class T>
 class Degenerate : public ::testing::Test {};
 using test_support::ScalarNames;
@@ -125,7 +117,7 @@ void check_pairs(const std::vector<RawPair>& rows, Sweep& sweep) {
         EXPECT_NE(r.reason, InvalidReason::None);
         continue;
       }
-      ASSERT_TRUE(finite(r)) << name(m) << " on " << p.a[2].transpose() << " / " << p.b[0].transpose();
+      ASSERT_TRUE(all_finite(r)) << name(m) << " on " << p.a[2].transpose() << " / " << p.b[0].transpose();
       if (m != Method::Sat && m != Method::Dyop) continue;
       const double error = std::abs(double(r.separation) - exact.separation) / size;
       sweep.worst_exact_error = std::max(sweep.worst_exact_error, error);

@@ -13,10 +13,13 @@
 #include "dyop/sat.hpp"
 #include "workloads/input_classes.hpp"
 #include "support/make_triangle.hpp"
+#include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop {
 namespace {
+
+using test_support::all_finite;
 
 template <class T>
 class Epa : public ::testing::Test {};
@@ -32,11 +35,6 @@ T tol() {
   return T(400) * Eigen::NumTraits<T>::epsilon();
 }
 
-template <class T>
-bool finite(const Result<T>& r) {
-  return std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite() &&
-         r.witness_a.allFinite() && r.witness_b.allFinite();
-}
 
 // B's bottom edge y = 2 lies 1 above A's apex (1, 1): a vertex–edge distance.
 TYPED_TEST(Epa, ApartPairGivesTheDistanceWitnessesAndFeatures) {
@@ -118,7 +116,7 @@ TYPED_TEST(Epa, IdenticalTrianglesDepthIsTheSmallestAltitude) {
   const auto a = tri<T>(0, 0, 2, 0, 1, 1);
   const auto b = tri<T>(1, 1, 2, 0, 0, 0);  // same triangle, clockwise
   const Result<T> r = epa(a, b, {Level::Manifold});
-  ASSERT_TRUE(finite(r));
+  ASSERT_TRUE(all_finite(r));
   EXPECT_EQ(r.status, Status::Penetrating);
   EXPECT_NEAR(r.depth, 1, tol<T>());
   EXPECT_NEAR(std::abs(r.normal.y()), 1, tol<T>());
@@ -133,7 +131,7 @@ TYPED_TEST(Epa, ExactContactIsTouchingWithZeroSeparation) {
   for (const Triangle<T>& b : bs) {
     for (Level level : {Level::Overlap, Level::Depth, Level::Manifold}) {
       const Result<T> r = epa(a, b, {level});
-      ASSERT_TRUE(finite(r));
+      ASSERT_TRUE(all_finite(r));
       EXPECT_EQ(r.status, Status::Touching);
       EXPECT_LE(std::abs(r.separation), touching_tolerance<T>() * 2);
     }
@@ -330,7 +328,7 @@ TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
     const double size = workloads::pair_size(p);
     const Result<double> e = epa(t.a.triangle, t.b.triangle, {Level::Contact});
     const Result<double> s = sat(t.a.triangle, t.b.triangle, {Level::Contact});
-    ASSERT_TRUE(finite(e));
+    ASSERT_TRUE(all_finite(e));
     ASSERT_LE(e.iterations, 2 * epa_max_iterations);
     ++fig.pairs;
     fig.sum_iterations += e.iterations;
@@ -393,7 +391,7 @@ TEST(EpaFloat, AgreesWithSatInFloatOnRandomPairs) {
       if (!t.a.ok() || !t.b.ok()) continue;  // a double sliver may be flat in float
       const Result<float> e = epa(t.a.triangle, t.b.triangle, {Level::Manifold});
       const Result<float> s = sat(t.a.triangle, t.b.triangle, {Level::Depth});
-      ASSERT_TRUE(finite(e)) << workloads::name(c);
+      ASSERT_TRUE(all_finite(e)) << workloads::name(c);
       EXPECT_LE(e.iterations, 2 * epa_max_iterations);
       const double size = workloads::pair_size(p);
       EXPECT_LE(std::abs(e.separation - s.separation), 1e-5 * size) << workloads::name(c);

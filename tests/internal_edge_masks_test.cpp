@@ -16,17 +16,14 @@
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/raw_pair.hpp"
 #include "support/make_triangle.hpp"
+#include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop {
 namespace {
 
+using test_support::tol;
 using test_support::tri;
-
-template <class T>
-T tol() {
-  return T(100) * Eigen::NumTraits<T>::epsilon();
-}
 
 constexpr std::uint8_t ground_edges = 0b011;     // A's edges 0 and 1
 constexpr std::uint8_t ground_vertices = 0b101;  // A's vertices 0 and 2

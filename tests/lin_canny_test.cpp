@@ -13,10 +13,13 @@
 #include "workloads/input_classes.hpp"
 #include "workloads/random.hpp"
 #include "support/make_triangle.hpp"
+#include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop::workloads {
 namespace {
+
+using test_support::all_finite;
 
 template <class T>
 class LinCanny : public ::testing::Test {};
@@ -24,23 +27,9 @@ using test_support::ScalarNames;
 using test_support::Scalars;
 TYPED_TEST_SUITE(LinCanny, Scalars, ScalarNames);
 
+using test_support::tol;
 using test_support::tri;
 
-template <class T>
-T tol() {
-  return T(100) * Eigen::NumTraits<T>::epsilon();
-}
-
-template <class T>
-bool finite(const Result<T>& r) {
-  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite() &&
-            r.witness_a.allFinite() && r.witness_b.allFinite();
-  for (int i = 0; i < r.manifold.point_count; ++i) {
-    ok = ok && r.manifold.points[i].point.allFinite() &&
-         std::isfinite(r.manifold.points[i].separation);
-  }
-  return ok;
-}
 
 // Caller's vertex i of the triangle given as `t`'s CCW vertices through input_vertex.
 template <class T>
@@ -168,7 +157,7 @@ TYPED_TEST(LinCanny, ExactlyTouchingPairsAreTouching) {
       const Result<T> r = lin_canny(a, b, {level});
       EXPECT_EQ(r.status, Status::Touching);
       EXPECT_LE(std::abs(r.separation), tol<T>());
-      EXPECT_TRUE(finite(r));
+      EXPECT_TRUE(all_finite(r));
     }
   }
 }
@@ -484,7 +473,7 @@ TEST(LinCannyRandom, IterationsStayWithinTheStepBoundAndNoResultIsNanOrInf) {
           EXPECT_GE(r.iterations, 1) << name(c);
           EXPECT_LE(r.iterations, lin_canny_max_steps) << name(c);
           EXPECT_NE(r.status, Status::Invalid) << name(c);
-          EXPECT_TRUE(finite(r)) << name(c);
+          EXPECT_TRUE(all_finite(r)) << name(c);
         }
         if (!f.a.ok() || !f.b.ok()) continue;  // slivers too thin for float are not triangles
         const Query<float> qf{level, float(q.margin)};
@@ -492,7 +481,7 @@ TEST(LinCannyRandom, IterationsStayWithinTheStepBoundAndNoResultIsNanOrInf) {
           const Result<float> r = lin_canny(f.a.triangle, f.b.triangle, qf, cache);
           EXPECT_LE(r.iterations, lin_canny_max_steps) << name(c);
           EXPECT_NE(r.status, Status::Invalid) << name(c);
-          EXPECT_TRUE(finite(r)) << name(c);
+          EXPECT_TRUE(all_finite(r)) << name(c);
         }
       }
     }

@@ -3,6 +3,7 @@
 
 #include "dyop/sat.hpp"
 #include "support/make_triangle.hpp"
+#include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
 namespace dyop {
@@ -14,12 +15,8 @@ using test_support::ScalarNames;
 using test_support::Scalars;
 TYPED_TEST_SUITE(Sat, Scalars, ScalarNames);
 
+using test_support::tol;
 using test_support::tri;
-
-template <class T>
-T tol() {
-  return T(100) * Eigen::NumTraits<T>::epsilon();
-}
 
 // A's bottom edge (y = 0) is pierced 0.5 deep by B's top vertex (2, 0.5).
 TYPED_TEST(Sat, VertexIntoFaceGivesItsDepthNormalWitnessesAndFeatures) {
