@@ -35,7 +35,6 @@ T tol() {
   return T(400) * Eigen::NumTraits<T>::epsilon();
 }
 
-
 // B's bottom edge y = 2 lies 1 above A's apex (1, 1): a vertex–edge distance.
 TYPED_TEST(Epa, ApartPairGivesTheDistanceWitnessesAndFeatures) {
   using T = TypeParam;

@@ -19,14 +19,13 @@
 namespace dyop::workloads {
 namespace {
 
-using test_support::all_finite;
-
 template <class T>
 class LinCanny : public ::testing::Test {};
 using test_support::ScalarNames;
 using test_support::Scalars;
 TYPED_TEST_SUITE(LinCanny, Scalars, ScalarNames);
 
+using test_support::all_finite;
 using test_support::tol;
 using test_support::tri;
 
