@@ -20,6 +20,7 @@ namespace dyop {
 namespace {
 
 using test_support::all_finite;
+using test_support::has_features;
 
 template <class T>
 class Epa : public ::testing::Test {};
@@ -47,10 +48,7 @@ TYPED_TEST(Epa, ApartPairGivesTheDistanceWitnessesAndFeatures) {
   EXPECT_NEAR((r.normal - Vec2<T>(0, 1)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_a - Vec2<T>(1, 1)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_b - Vec2<T>(1, 2)).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_a.index, 2);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Edge);
-  EXPECT_EQ(r.feature_b.index, 0);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 2}, {Feature::Type::Edge, 0}));
   EXPECT_GT(r.iterations, 0);
 }
 
@@ -63,10 +61,7 @@ TYPED_TEST(Epa, VertexToVertexDistanceIsAlongTheJoiningLine) {
   EXPECT_EQ(r.status, Status::Separated);
   EXPECT_NEAR(r.separation, std::sqrt(T(2)), tol<T>());
   EXPECT_NEAR((r.normal - Vec2<T>(1, 1) / std::sqrt(T(2))).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_a.index, 1);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 0);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 1}, {Feature::Type::Vertex, 0}));
 }
 
 // B's apex (1.5, 0.25) pierces A's bottom edge y = 0 by 0.25; every other axis overlaps ≥ 2.
@@ -81,10 +76,7 @@ TYPED_TEST(Epa, VertexIntoFaceGivesItsDepthNormalWitnessesAndFeatures) {
   EXPECT_NEAR((r.normal - Vec2<T>(0, -1)).norm(), 0, tol<T>());  // B moves down, out of A
   EXPECT_NEAR((r.witness_b - Vec2<T>(1.5, 0.25)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_a - Vec2<T>(1.5, 0)).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-  EXPECT_EQ(r.feature_a.index, 0);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 2);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 2}));
 }
 
 // Right triangles with axis-parallel legs: B's vertical leg x = 0.1 is 0.1 inside A's leg x = 0.
@@ -163,10 +155,7 @@ TYPED_TEST(Epa, ClockwiseInputReportsFeaturesInTheCallersOrder) {
     const auto b = tri<T>(-1, 2, 1, 4, 3, 2);    // bottom edge is caller's 2 (vertex 2 → 0)
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Separated);
-    EXPECT_EQ(r.feature_a.type, Feature::Type::Vertex);
-    EXPECT_EQ(r.feature_a.index, 1);
-    EXPECT_EQ(r.feature_b.type, Feature::Type::Edge);
-    EXPECT_EQ(r.feature_b.index, 2);
+    EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 1}, {Feature::Type::Edge, 2}));
   }
   {
     const auto a = tri<T>(0, 0, 0, 4, 4, 0);         // bottom edge is caller's 2 (vertex 2 → 0)
@@ -174,10 +163,7 @@ TYPED_TEST(Epa, ClockwiseInputReportsFeaturesInTheCallersOrder) {
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Penetrating);
     EXPECT_NEAR(r.depth, 0.25, tol<T>());
-    EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-    EXPECT_EQ(r.feature_a.index, 2);
-    EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-    EXPECT_EQ(r.feature_b.index, 0);
+    EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 2}, {Feature::Type::Vertex, 0}));
   }
 }
 

@@ -26,6 +26,7 @@ using test_support::Scalars;
 TYPED_TEST_SUITE(LinCanny, Scalars, ScalarNames);
 
 using test_support::all_finite;
+using test_support::has_features;
 using test_support::tol;
 using test_support::tri;
 
@@ -53,10 +54,7 @@ TYPED_TEST(LinCanny, VertexToEdgeDistanceIsAlongTheEdgeNormal) {
   EXPECT_EQ(r.normal, Vec2<T>(0, 1));  // A's edge normal itself, not a difference of points
   EXPECT_NEAR((r.witness_a - Vec2<T>(1, 0)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_b - Vec2<T>(1, 0.25)).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-  EXPECT_EQ(r.feature_a.index, 0);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 0);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 0}));
 }
 
 TYPED_TEST(LinCanny, VertexToVertexDistanceAndWitnesses) {
@@ -69,10 +67,7 @@ TYPED_TEST(LinCanny, VertexToVertexDistanceAndWitnesses) {
   EXPECT_NEAR((r.normal - Vec2<T>(1, 1) / std::sqrt(T(2))).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_a - Vec2<T>(0, 0)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_b - Vec2<T>(1, 1)).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_a.index, 0);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 0);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 0}, {Feature::Type::Vertex, 0}));
 }
 
 // A's top edge y = 0 faces B's bottom edge y = 0.25 over x in [0.5, 2]: every point of the overlap
@@ -107,10 +102,7 @@ TYPED_TEST(LinCanny, VertexIntoFaceGivesTheKnownDepth) {
     if (level == Level::Depth) continue;
     EXPECT_NEAR((r.witness_b - Vec2<T>(2, 0.5)).norm(), 0, tol<T>());
     EXPECT_NEAR((r.witness_a - Vec2<T>(2, 0)).norm(), 0, tol<T>());
-    EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-    EXPECT_EQ(r.feature_a.index, 0);
-    EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-    EXPECT_EQ(r.feature_b.index, 0);
+    EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 0}));
     if (level == Level::Manifold) {
       EXPECT_GE(r.manifold.point_count, 1);
     }
@@ -172,10 +164,7 @@ TYPED_TEST(LinCanny, FeaturesAreInTheCallersOrderForClockwiseInput) {
   const Result<T> r = lin_canny(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Separated);
   EXPECT_NEAR(r.separation, 0.25, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-  EXPECT_EQ(r.feature_a.index, 1);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 1);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 1}, {Feature::Type::Vertex, 1}));
   EXPECT_EQ(r.witness_b, caller_vertex(b, 1));
 
   // Penetrating: the answer's features come from the depth axis, mapped the same way.
@@ -184,10 +173,7 @@ TYPED_TEST(LinCanny, FeaturesAreInTheCallersOrderForClockwiseInput) {
   const Result<T> p = lin_canny(d, c, {Level::Contact});
   EXPECT_EQ(p.status, Status::Penetrating);
   EXPECT_NEAR(p.depth, 0.5, tol<T>());
-  EXPECT_EQ(p.feature_a.type, Feature::Type::Edge);
-  EXPECT_EQ(p.feature_a.index, 1);
-  EXPECT_EQ(p.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(p.feature_b.index, 1);
+  EXPECT_TRUE(has_features(p, {Feature::Type::Edge, 1}, {Feature::Type::Vertex, 1}));
   EXPECT_EQ(p.witness_b, caller_vertex(c, 1));
 }
 

@@ -16,6 +16,7 @@ using test_support::Scalars;
 TYPED_TEST_SUITE(Sat, Scalars, ScalarNames);
 
 using test_support::tol;
+using test_support::has_features;
 using test_support::tri;
 
 // A's bottom edge (y = 0) is pierced 0.5 deep by B's top vertex (2, 0.5).
@@ -31,10 +32,7 @@ TYPED_TEST(Sat, VertexIntoFaceGivesItsDepthNormalWitnessesAndFeatures) {
   EXPECT_NEAR(r.normal.y(), -1, tol<T>());  // B moves down, out of A
   EXPECT_NEAR((r.witness_b - Vec2<T>(2, 0.5)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_a - Vec2<T>(2, 0)).norm(), 0, tol<T>());
-  EXPECT_EQ(r.feature_a.type, Feature::Type::Edge);
-  EXPECT_EQ(r.feature_a.index, 0);
-  EXPECT_EQ(r.feature_b.type, Feature::Type::Vertex);
-  EXPECT_EQ(r.feature_b.index, 0);
+  EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 0}));
 }
 
 TYPED_TEST(Sat, ApartPairGivesTheEuclideanDistanceAndClosestPoints) {

@@ -2,8 +2,10 @@
 // Test support: what the typed suites check of any method's `Result`.
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "dyop/result.hpp"
 
@@ -28,6 +30,29 @@ bool all_finite(const Result<T>& r) {
          std::isfinite(r.manifold.points[i].separation);
   }
   return ok;
+}
+
+inline const char* type_name(Feature::Type t) {
+  switch (t) {
+    case Feature::Type::Vertex: return "vertex";
+    case Feature::Type::Edge: return "edge";
+    case Feature::Type::None: break;
+  }
+  return "none";
+}
+
+// Success when `r`'s features are `a` on A and `b` on B (caller's indices); otherwise a message
+// naming the features found and the ones expected.
+template <class T>
+::testing::AssertionResult has_features(const Result<T>& r, Feature a, Feature b) {
+  const auto same = [](Feature x, Feature y) { return x.type == y.type && x.index == y.index; };
+  if (same(r.feature_a, a) && same(r.feature_b, b)) return ::testing::AssertionSuccess();
+  const auto text = [](Feature f) {
+    return std::string(type_name(f.type)) + " " + std::to_string(f.index);
+  };
+  return ::testing::AssertionFailure() << "features A " << text(r.feature_a) << ", B "
+                                       << text(r.feature_b) << "; expected A " << text(a)
+                                       << ", B " << text(b);
 }
 
 }  // namespace dyop::test_support
