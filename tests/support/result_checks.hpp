@@ -32,6 +32,7 @@ bool all_finite(const Result<T>& r) {
   return ok;
 }
 
+// A feature type as failure messages name it.
 inline const char* type_name(Feature::Type t) {
   switch (t) {
     case Feature::Type::Vertex: return "vertex";
