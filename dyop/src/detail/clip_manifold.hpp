@@ -31,25 +31,40 @@ enum class ClipSide : std::uint8_t { None, Start, End };
 // b2CollidePolygons): warm starting carries its impulse through both. Measured in a tall rain
 // (1,500 triangles into a triangulated bin, 10 seeds): keys naming the reference side and edge
 // lost about 2 % of the warm starts Box2D keeps, and the world had 16 % more time-of-impact
-// events than under Box2D's own contact; with these keys, as many. The parts are found once per
-// manifold, so that each point's key is two selects and two shifts.
-struct KeyParts {
-  static constexpr std::uint32_t edge = 1u << 16;  // feature type Edge, at the type byte
-  std::uint32_t ref_edge;      // the reference edge (type Edge)
-  std::uint32_t ref_vertex[2];  // the reference face's start and end vertices (type Vertex)
-  std::uint32_t inc_edge;      // the incident edge (type Edge)
-  int ref_shift;               // 0 when the reference is A's, 8 when B's
-  int inc_shift;
-
-  // A point: clipped at `side` (Start, End), or not clipped (None), at incident vertex `vertex`
-  // (caller's index).
-  std::uint32_t key(ClipSide side, int vertex) const {
-    // Selected by mask, not branched on: whether a side line cut the point does not predict.
-    const std::uint32_t cut = 0u - static_cast<std::uint32_t>(side != ClipSide::None);
-    const std::uint32_t ref = (ref_vertex[side == ClipSide::End] & cut) | (ref_edge & ~cut);
-    const std::uint32_t inc = (inc_edge & cut) | (static_cast<std::uint32_t>(vertex) & ~cut);
-    return ref << ref_shift | inc << inc_shift;
+// events than under Box2D's own contact; with these keys, as many. A manifold's points can have
+// only four keys, found once per manifold; each point's key is then looked up.
+class PointKeys {
+ public:
+  // `reference_edge`, `face_start` and `face_end`: the reference edge and its start and end
+  // vertices; `incident_edge` and `incident_start`: the incident edge and its first vertex
+  // (`incident_end` its second); every index the caller's. `reference_is_a`: whose face it is.
+  PointKeys(int reference_edge, int face_start, int face_end, int incident_edge,
+            int incident_start, int incident_end, bool reference_is_a) {
+    const int ref_shift = reference_is_a ? 0 : 8;
+    const int inc_shift = reference_is_a ? 8 : 0;
+    const auto pair = [&](std::uint32_t ref, std::uint32_t inc) {
+      return ref << ref_shift | inc << inc_shift;
+    };
+    const auto u = [](int index) { return static_cast<std::uint32_t>(index); };
+    key_[0] = pair(u(reference_edge) | kEdge, u(incident_start));
+    key_[1] = pair(u(face_start), u(incident_edge) | kEdge);
+    key_[2] = pair(u(face_end), u(incident_edge) | kEdge);
+    key_[3] = pair(u(reference_edge) | kEdge, u(incident_end));
   }
+
+  // The key of the incident edge's end `end` (0 its first vertex, 1 its second), clipped at
+  // `side` or not clipped (None). Looked up, not branched on: whether a side line cut the point
+  // does not predict.
+  std::uint32_t key(int end, ClipSide side) const {
+    const int s = static_cast<int>(side);
+    return key_[s + 3 * (end & static_cast<int>(s == 0))];
+  }
+
+ private:
+  static constexpr std::uint32_t kEdge = 1u << 16;  // feature type Edge, at the type byte
+  // The first end not clipped, a cut at the start side line, a cut at the end side line, the
+  // second end not clipped: `key`'s order.
+  std::uint32_t key_[4];
 };
 
 // One end of the incident edge after clipping: the end itself (side None) or the point where a
@@ -122,13 +137,9 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
   const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
   const Vec2<T>* vertex_point[2] = {&p0, &p1};
   const int vertex[2] = {inc, next3(inc)};
-  const int incident_edge = it.input_edge(inc);
-  const KeyParts keys{m.reference_edge | KeyParts::edge,
-                      {static_cast<std::uint32_t>(rt.input_vertex(e)),
-                       static_cast<std::uint32_t>(rt.input_vertex(next3(e)))},
-                      static_cast<std::uint32_t>(incident_edge) | KeyParts::edge,
-                      ref_is_a ? 0 : 8,
-                      ref_is_a ? 8 : 0};
+  const PointKeys keys(m.reference_edge, rt.input_vertex(e), rt.input_vertex(next3(e)),
+                       it.input_edge(inc), it.input_vertex(vertex[0]), it.input_vertex(vertex[1]),
+                       ref_is_a);
   const T front = n.dot(v1);
   for (int k = 0; k < 2; ++k) {
     // An end the side lines did not cut is the incident vertex itself, bit for bit.
@@ -143,7 +154,7 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
     ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
     out.point = p + f.origin;
     out.separation = separation;
-    out.key = keys.key(ends[k].side, it.input_vertex(vertex[k]));
+    out.key = keys.key(k, ends[k].side);
     m.point_count += static_cast<int>(separation <= margin);
   }
 }
