@@ -110,7 +110,7 @@ constexpr int kPilesSettled = 10;
 // DyopFast does not settle the pile: bodies keep creeping over one another (measured over the
 // twelve piles: 0.11 to 7.7 m/s over the last 4 s). Held to what it achieves: every body stays in
 // the bin (none passes through the ground or the walls), and none is faster than a body falling
-// from the drop height, which would be energy from nowhere.
+// from the drop height (under `World`'s gravity, 10 m/s²), which would be energy from nowhere.
 const float kFreeFallSpeed = std::sqrt(2 * 10.0f * kDropHeight);
 
 // A static wall of 1 × `height` m at x in [x0, x0 + 1]: one cell, two triangle fixtures.
