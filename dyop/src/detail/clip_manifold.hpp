@@ -136,9 +136,8 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
 
   const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
   const Vec2<T>* vertex_point[2] = {&p0, &p1};
-  const int vertex[2] = {inc, next3(inc)};
   const PointKeys keys(m.reference_edge, rt.input_vertex(e), rt.input_vertex(next3(e)),
-                       it.input_edge(inc), it.input_vertex(vertex[0]), it.input_vertex(vertex[1]),
+                       m.incident_edge, it.input_vertex(inc), it.input_vertex(next3(inc)),
                        ref_is_a);
   const T front = n.dot(v1);
   for (int k = 0; k < 2; ++k) {
