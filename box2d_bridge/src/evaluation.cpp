@@ -110,11 +110,17 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   PairState* const state = setting.config.lin_canny_cache ? &memory.warm_start : &cold;
   const Triangle<float> a = placed(pair.a);
   const Triangle<float> b = placed(pair.b, b_in_a);
-  // The masks: a world's contact's own when found under its stamp; a caller's
-  // (`collide_polygons`) as given.
+  // The masks: the fixtures' fixed edge data; else a world's contact's own when found under its
+  // stamp; a caller's (`collide_polygons`) as given.
   bool put_off = false;
   if (setting.internal_edges) {
-    put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *contact, recycling);
+    const std::optional<InternalEdges> fixed =
+        contact ? contact->fixed_internal_edges() : std::nullopt;
+    if (fixed) {
+      memory.internal_edges = *fixed;
+    } else {
+      put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *contact, recycling);
+    }
     if (!put_off) query.internal_edges = memory.internal_edges;
   }
   Result<float> r = penetrate(*setting.method, a, b, query, state);

@@ -52,7 +52,7 @@ class Group : public b2QueryCallback {
   // `scratch` is emptied and filled: the calling thread's, reused so that finding masks
   // allocates nothing once it has grown to the largest neighbourhood seen.
   Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupTriangle>& scratch)
-      : self_(self), body_(*self.GetBody()), triangles_(scratch) {
+      : self_(self), body_(*self.GetBody()), own_(own), triangles_(scratch) {
     triangles_.clear();
     triangles_.push_back({{own.m_vertices[0], own.m_vertices[1], own.m_vertices[2]}});
     for (const b2Vec2& v : triangles_.front().v) own_scale_ = std::max(own_scale_, magnitude(v));
@@ -68,7 +68,11 @@ class Group : public b2QueryCallback {
         return;
       }
     }
-    body_.GetWorld()->QueryAABB(this, self_.GetAABB(0));
+    // The triangle's own box, not its broad-phase proxy's: every triangle touching it overlaps
+    // it with its fattened box, and a disabled body's fixture has no proxy.
+    b2AABB box;
+    own_.ComputeAABB(&box, body_.GetTransform(), 0);
+    body_.GetWorld()->QueryAABB(this, box);
   }
 
   bool ReportFixture(b2Fixture* f) override {
@@ -152,6 +156,7 @@ class Group : public b2QueryCallback {
 
   const b2Fixture& self_;
   const b2Body& body_;
+  const b2PolygonShape& own_;
   std::vector<GroupTriangle>& triangles_;
   // The tolerance's scale (see `tolerance`): 16 FLT_EPSILON.
   static constexpr float coincidence_epsilons = 16;

@@ -30,8 +30,8 @@ inline bool share_edges(const b2Body& a, const b2Body& b) {
 //   A vertex is closed when both of its edges are internal, or when one is and the outline through
 //   it is flat or reflex: one outline piece in and one out, from the edges that end there or, at a
 //   T-junction, from an edge that passes through it (which is straight there).
-// Every triangle of the group touching the fixture's triangle overlaps its broad-phase box, so the
-// world's broad phase finds them all; cost: one query of that box (a walk of a small non-static
+// Every triangle of the group touching the fixture's triangle overlaps its box, so the world's
+// broad phase finds them all; cost: one query of that box (a walk of a small non-static
 // body's fixtures instead).
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 

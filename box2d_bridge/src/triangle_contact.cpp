@@ -160,9 +160,10 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
   // the two bodies made or destroyed between steps) clears them all.
-  std::optional<InternalEdges> a;
-  std::optional<InternalEdges> b;
-  for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
+  // A fixture's fixed edge data first (`fix_internal_edges`): nothing to find.
+  std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
+  std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
+  if (!(a && b)) for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
     if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found ||
         c.memory_.internal_edges_fixtures != fixtures || !(c.memory_.internal_edges_motion < 0)) {
       return true;
@@ -287,6 +288,7 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
   const auto* ours = detail::TriangleContact::ours(const_cast<b2Contact*>(&contact));
   if (!ours) return std::nullopt;
+  if (const std::optional<InternalEdges> fixed = ours->fixed_internal_edges()) return fixed;
   return ours->current_internal_edges(detail::installation().setting.epoch);
 }
 

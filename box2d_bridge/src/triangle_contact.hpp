@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "dyop/box2d.hpp"
+#include "edge_data.hpp"
 #include "recycling.hpp"
 
 namespace dyop::box2d::detail {
@@ -114,6 +115,16 @@ class TriangleContact final : public b2Contact {
       return std::nullopt;
     }
     return memory_.internal_edges;
+  }
+
+  // Its pair's masks from the fixed edge data of its two fixtures (`fix_internal_edges`), when
+  // both have it: then nothing is found, stamped or followed for the pair.
+  std::optional<InternalEdges> fixed_internal_edges() const {
+    const std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
+    if (!a) return std::nullopt;
+    const std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
+    if (!b) return std::nullopt;
+    return InternalEdges::pair(*a, *b);
   }
 
   // Its internal-edge masks are found again when next needed (a fixture near it changed).

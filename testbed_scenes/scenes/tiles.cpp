@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "dyop/box2d_internal_edges.hpp"
 #include "scenes/builders.hpp"
 
 namespace dyop::scenes::detail {
@@ -117,6 +118,12 @@ void update_changing(ChangingGround& g, float x) {
     } else {
       tile->SetTransform(wanted ? g.home[k] : g.home[k] - b2Vec2(0, kParkedDepth), 0);
     }
+    // The tile's fixed edge data and its neighbours' found again where it came or went, as the
+    // plug-in asks of a fixed ground changed by hand (a parked tile is refreshed when it is back).
+    b2AABB home;
+    home.lowerBound = g.home[k];
+    home.upperBound = g.home[k] + b2Vec2(kTile, kTile);
+    box2d::refresh_internal_edges(*tile->GetWorld(), home);
   }
 }
 

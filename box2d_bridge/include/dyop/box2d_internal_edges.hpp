@@ -29,6 +29,28 @@ namespace dyop::box2d {
 ///   another triangle's edge takes that edge as the outline through it, straight.
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 
+/// Fixes the edge data of every triangle fixture of `body`: its masks as `triangle_internal_edges`
+/// gives them now, kept in the fixture (no memory beyond it). Contacts then read them in O(1) and
+/// never look anything up; the fixed triangles of other bodies next to `body`'s get theirs again.
+/// Fixed edge data changes only through `fix_internal_edges`, `refresh_internal_edges` and
+/// `add_triangles` (`dyop/box2d_mesh.hpp`): after changing a fixed ground by hand (a fixture
+/// created or destroyed, a body moved, enabled, disabled or made static or not), refresh where it
+/// changed. Call between steps. A disabled body's triangles get empty masks until refreshed.
+void fix_internal_edges(b2Body& body);
+
+/// `fix_internal_edges` of every body of `world`.
+void fix_internal_edges(b2World& world);
+
+/// Finds again the fixed edge data of every fixed triangle whose broad-phase box overlaps `region`
+/// (world frame, metres) and returns how many: the refresh after a hand change of a fixed ground.
+/// For a body moved by `SetTransform`, refresh where it was and where it is; for one destroyed,
+/// disabled or enabled, where it was or is. Call between steps.
+int refresh_internal_edges(b2World& world, const b2AABB& region);
+
+/// The fixed edge data of `fixture` (bits 0..2, Box2D's vertex order), or nothing: not a triangle,
+/// or never fixed (its contacts then find its masks themselves, as `Config::internal_edges` says).
+std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture);
+
 /// Makes every contact of `world` find its masks again when next needed: O(contacts), for a
 /// program that moved static bodies (`SetTransform`) and wants bodies that were farther than the
 /// broad phase's margin (0.1 m) from them to see it at once. The plug-in sees every other change
@@ -39,11 +61,12 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 /// contacts made or ended between steps (see `Config::internal_edges`). Call between steps.
 void forget_internal_edges(b2World& world);
 
-/// The masks `contact` holds for its pair (`Query::internal_edges`: A's bits, then B's), when it
-/// found them, or was lent them by another contact, under the world as it is now (the same
-/// install, fixtures and static frames); nothing otherwise (a contact finds them once its pair
-/// first comes within the skins), and for a contact the plug-in did not make. What the masks the rule applies are, for tests and for drawing: they equal
-/// `InternalEdges::pair` of the two fixtures' `triangle_internal_edges`.
+/// The masks the rule applies to `contact`'s pair (`Query::internal_edges`: A's bits, then B's),
+/// for tests and drawing: the two fixtures' fixed edge data when both have it; else the masks the
+/// contact found, or was lent by another contact, under the world as it is now (the same install,
+/// fixtures and static frames), which equal `InternalEdges::pair` of the two fixtures'
+/// `triangle_internal_edges`. Nothing when it holds none (a contact finds them once its pair first
+/// comes within the skins) and for a contact the plug-in did not make.
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact);
 
 }  // namespace dyop::box2d

@@ -1,0 +1,88 @@
+#include "edge_data.hpp"
+
+#include <box2d/b2_body.h>
+#include <box2d/b2_world.h>
+#include <box2d/b2_world_callbacks.h>
+
+#include <vector>
+
+#include "dyop/box2d_internal_edges.hpp"
+#include "internal_edges.hpp"
+
+namespace dyop::box2d {
+namespace detail {
+namespace {
+
+bool is_triangle(const b2Fixture& f) {
+  return f.GetType() == b2Shape::e_polygon &&
+         static_cast<const b2PolygonShape*>(f.GetShape())->m_count == 3;
+}
+
+// The fixtures with fixed edge data whose broad-phase boxes overlap a region.
+class FixedInRegion : public b2QueryCallback {
+ public:
+  bool ReportFixture(b2Fixture* f) override {
+    if (fixed_edges(*f)) found.push_back(f);
+    return true;
+  }
+  std::vector<b2Fixture*> found;
+};
+
+// The triangle fixtures of `body`.
+void add_triangles_of(const b2Body& body, std::vector<b2Fixture*>& out) {
+  for (b2Fixture* f = const_cast<b2Body&>(body).GetFixtureList(); f; f = f->GetNext()) {
+    if (is_triangle(*f)) out.push_back(f);
+  }
+}
+
+}  // namespace
+
+void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures) {
+  if (fixtures.empty()) return;
+  // Marked first (empty masks), then found over the region they span: a triangle's masks read
+  // its neighbours' shapes, never their edge data, so the order of the finds does not matter.
+  b2AABB region;
+  for (std::size_t i = 0; i < fixtures.size(); ++i) {
+    b2Fixture& f = *fixtures[i];
+    write_fixed_edges(f, {});
+    b2AABB box;
+    f.GetShape()->ComputeAABB(&box, f.GetBody()->GetTransform(), 0);
+    if (i == 0) {
+      region = box;
+    } else {
+      region.Combine(box);
+    }
+  }
+  refresh_internal_edges(world, region);
+}
+
+}  // namespace detail
+
+void fix_internal_edges(b2Body& body) {
+  std::vector<b2Fixture*> fixtures;
+  detail::add_triangles_of(body, fixtures);
+  detail::fix_fixtures(*body.GetWorld(), fixtures);
+}
+
+void fix_internal_edges(b2World& world) {
+  std::vector<b2Fixture*> fixtures;
+  for (const b2Body* body = world.GetBodyList(); body; body = body->GetNext()) {
+    detail::add_triangles_of(*body, fixtures);
+  }
+  detail::fix_fixtures(world, fixtures);
+}
+
+int refresh_internal_edges(b2World& world, const b2AABB& region) {
+  detail::FixedInRegion query;
+  world.QueryAABB(&query, region);
+  for (b2Fixture* f : query.found) {
+    detail::write_fixed_edges(*f, detail::triangle_internal_edges(*f));
+  }
+  return static_cast<int>(query.found.size());
+}
+
+std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture) {
+  return detail::fixed_edges(fixture);
+}
+
+}  // namespace dyop::box2d
