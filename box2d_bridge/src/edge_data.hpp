@@ -3,7 +3,8 @@
 // shape. A triangle `b2PolygonShape` uses 3 of its 8 vertex slots; Box2D copies the whole shape
 // into the fixture (`b2PolygonShape::Clone`) and reads only `m_count` of them, so slots 3 and 4
 // hold the record: freed with the fixture, in the world's own memory, read where the contact
-// already reads the vertices. See docs/box2d_plugin.md ("Edge data").
+// already reads the vertices. Why there and when it is refreshed: docs/design.md, section 5
+// ("Fixed edge data").
 
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
