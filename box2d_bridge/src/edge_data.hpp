@@ -30,26 +30,36 @@ struct EdgeRecord {
 static_assert(sizeof(EdgeRecord) == 2 * sizeof(b2Vec2), "the record fills vertex slots 3 and 4");
 static_assert(b2_maxPolygonVertices >= 5, "a triangle leaves vertex slots 3 and 4 free");
 
-// The key of `fixture`'s record. Why the fixture's address, mixed: a shape copied out of a
-// fixture (`GetShape`) into another fixture carries the record along, and a default-constructed
+// The key of `fixture`'s record. Why the fixture's address: a shape copied out of a fixture
+// (`GetShape`) into another fixture carries the record along, and a default-constructed
 // `b2PolygonShape` leaves the slots uninitialised; neither may read as edge data. The fixture
-// owns the record, so no other fixture can hold a matching one while it lives. Never 0.
+// owns the record, so no other fixture can hold a matching one while it lives. The constant
+// makes a key unlike the float coordinates the slots hold otherwise. Never 0.
 inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
   const auto address = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&fixture));
-  return ((address ^ 0x5EED'ED6E'DA7A'0001u) * 0x9E37'79B9'7F4A'7C15u) | 1u;
+  return address ^ 0x5EED'ED6E'DA7A'0001u;
 }
 
-// The fixed edge data of `fixture` (bits 0..2), or nothing: not a triangle, or none written.
-inline std::optional<InternalEdges> fixed_edges(const b2Fixture& fixture) {
-  const b2Shape* shape = fixture.GetShape();
-  if (shape->m_type != b2Shape::e_polygon) return std::nullopt;
-  const auto& polygon = *static_cast<const b2PolygonShape*>(shape);
-  if (polygon.m_count != 3) return std::nullopt;
+// The fixed edge data of triangle fixture `fixture` (bits 0..2), or nothing: none written. Every
+// evaluation with the rule on asks, so the shape is not checked again: the caller knows it is a
+// triangle.
+inline std::optional<InternalEdges> fixed_triangle_edges(const b2Fixture& fixture) {
+  const auto& polygon = *static_cast<const b2PolygonShape*>(fixture.GetShape());
   EdgeRecord record;
   std::memcpy(static_cast<void*>(&record), static_cast<const void*>(&polygon.m_vertices[3]),
               sizeof record);
   if (record.key != edge_record_key(fixture)) return std::nullopt;
   return InternalEdges{record.edges, record.closed_vertices};
+}
+
+// The fixed edge data of any fixture: nothing for a shape other than a triangle.
+inline std::optional<InternalEdges> fixed_edges(const b2Fixture& fixture) {
+  const b2Shape* shape = fixture.GetShape();
+  if (shape->m_type != b2Shape::e_polygon ||
+      static_cast<const b2PolygonShape*>(shape)->m_count != 3) {
+    return std::nullopt;
+  }
+  return fixed_triangle_edges(fixture);
 }
 
 // Writes `masks` as the fixed edge data of triangle fixture `fixture`.

@@ -288,7 +288,9 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
   const auto* ours = detail::TriangleContact::ours(const_cast<b2Contact*>(&contact));
   if (!ours) return std::nullopt;
-  if (const std::optional<InternalEdges> fixed = ours->fixed_internal_edges()) return fixed;
+  const std::optional<InternalEdges> a = detail::fixed_edges(*contact.GetFixtureA());
+  const std::optional<InternalEdges> b = detail::fixed_edges(*contact.GetFixtureB());
+  if (a && b) return InternalEdges::pair(*a, *b);
   return ours->current_internal_edges(detail::installation().setting.epoch);
 }
 

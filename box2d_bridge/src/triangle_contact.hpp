@@ -118,11 +118,12 @@ class TriangleContact final : public b2Contact {
   }
 
   // Its pair's masks from the fixed edge data of its two fixtures (`fix_internal_edges`), when
-  // both have it: then nothing is found, stamped or followed for the pair.
+  // both have it: then nothing is found, stamped or followed for the pair. For a pair of
+  // triangles (`ContactMemory::Shapes`).
   std::optional<InternalEdges> fixed_internal_edges() const {
-    const std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
+    const std::optional<InternalEdges> a = fixed_triangle_edges(*m_fixtureA);
     if (!a) return std::nullopt;
-    const std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
+    const std::optional<InternalEdges> b = fixed_triangle_edges(*m_fixtureB);
     if (!b) return std::nullopt;
     return InternalEdges::pair(*a, *b);
   }
