@@ -8,6 +8,7 @@
 
 #include "dyop/box2d_internal_edges.hpp"
 #include "internal_edges.hpp"
+#include "triangle_contact.hpp"
 
 namespace dyop::box2d {
 namespace detail {
@@ -77,6 +78,7 @@ int refresh_internal_edges(b2World& world, const b2AABB& region) {
   world.QueryAABB(&query, region);
   for (b2Fixture* f : query.found) {
     detail::write_fixed_edges(*f, detail::triangle_internal_edges(*f));
+    detail::recompute_contacts_of(*f);  // a kept manifold was computed with the old masks
   }
   return static_cast<int>(query.found.size());
 }

@@ -116,6 +116,7 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   if (setting.internal_edges) {
     const std::optional<InternalEdges> fixed =
         contact ? contact->fixed_internal_edges() : std::nullopt;
+    memory.internal_edges_fixed = fixed.has_value();
     if (fixed) {
       memory.internal_edges = *fixed;
     } else {

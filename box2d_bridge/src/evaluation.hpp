@@ -136,9 +136,7 @@ inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b
     return false;
   }
   if (!setting.internal_edges || !contact) return true;
-  if (const std::optional<InternalEdges> fixed = contact->fixed_internal_edges()) {
-    return *fixed == memory.internal_edges;  // the masks it was computed with
-  }
+  if (memory.internal_edges_fixed) return true;  // changed only by a refresh, which recomputes
   if (memory.internal_edges_stamp != contact->internal_edges_stamp(setting.epoch)) return false;
   notice_fixture_count(memory, *contact);
   return masks_still_hold(memory, setting);

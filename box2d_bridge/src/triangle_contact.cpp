@@ -138,6 +138,13 @@ void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
   allocator->Free(contact, sizeof(TriangleContact));
 }
 
+void recompute_contacts_of(const b2Fixture& fixture) {
+  for (const b2ContactEdge* e = fixture.GetBody()->GetContactList(); e; e = e->next) {
+    TriangleContact* c = TriangleContact::ours(e->contact);
+    if (c && (c->GetFixtureA() == &fixture || c->GetFixtureB() == &fixture)) c->recompute();
+  }
+}
+
 TriangleContact* TriangleContact::ours(b2Contact* c) {
   return typeid(*c) == typeid(TriangleContact) ? static_cast<TriangleContact*>(c) : nullptr;
 }

@@ -128,6 +128,9 @@ class TriangleContact final : public b2Contact {
     return InternalEdges::pair(*a, *b);
   }
 
+  // Its next evaluation computes afresh, whatever it keeps (its fixed edge data was refreshed).
+  void recompute() { recycling_.slack = 0; }
+
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
   void forget_internal_edges() { memory_.internal_edges_stamp = 0; }
 
@@ -161,5 +164,8 @@ class TriangleContact final : public b2Contact {
   ContactMemory memory_;
   ManifoldRecycling recycling_;
 };
+
+// Makes every contact of the plug-in with `fixture` compute afresh at its next evaluation.
+void recompute_contacts_of(const b2Fixture& fixture);
 
 }  // namespace dyop::box2d::detail

@@ -314,6 +314,10 @@ struct ContactMemory {
   /// every answer under it was apart beyond the margin, which is the same under any masks (see
   /// `Apart::Gap`): most contacts a broad phase makes never come closer.
   bool internal_edges_found = false;
+  /// A world's contact: `internal_edges` were read from its two fixtures' fixed edge data
+  /// (`fix_internal_edges`); a kept manifold then needs no check of them
+  /// (`refresh_internal_edges` makes the contacts of what it refreshes recompute).
+  bool internal_edges_fixed = false;
   /// A world's contact: the world's count of fixture proxies (its low 16 bits) when
   /// `internal_edges` were found. A fixture created or destroyed within the broad phase's reach of
   /// the pair makes or ends a contact with one of its bodies, which the pair sees at once; one
