@@ -19,7 +19,7 @@ namespace {
 
 // Box2D's block allocator serves sizes in classes (..., 160, 192, 224, 256, 320, ...). Box2D's
 // own polygon contact adds nothing to b2Contact (208 bytes in Box2D 2.4.1): the 224-byte class.
-// Ours adds its `ContactMemory` (20 bytes) and `ManifoldRecycling` (24): the 256-byte class.
+// Ours adds its `ContactMemory` and `ManifoldRecycling` (24 bytes each): the 256-byte class.
 constexpr std::size_t allocator_class_below = 224;
 constexpr std::size_t allocator_class = 256;
 
@@ -114,6 +114,8 @@ void fixtures_changed_near(const b2Contact& c) {
 // sizeof(b2PolygonContact), the 224-byte class: ours are never handed to it, since our destroy
 // function, which frees every polygon contact as what it is, stays registered once installed
 // (see `uninstall`).
+static_assert(sizeof(ContactMemory) == 24 && sizeof(ManifoldRecycling) == 24,
+              "the sizes the contact's budget counts on");
 static_assert(sizeof(TriangleContact) > allocator_class_below &&
                   sizeof(TriangleContact) <= allocator_class,
               "the plug-in's contact must fit Box2D's 256-byte allocator class");

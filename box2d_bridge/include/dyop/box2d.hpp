@@ -271,7 +271,7 @@ inline constexpr int skip_count = 2;
 /// "bounds", "warm-axis".
 const char* name(Skip s);
 
-/// What the plug-in remembers about one polygon pair between evaluations: 16 bytes, held inside
+/// What the plug-in remembers about one polygon pair between evaluations: 24 bytes, held inside
 /// each of its contacts (no heap: `b2World`'s destructor frees contacts without destroying them).
 /// A caller of `collide_polygons` that replays one pair's evaluations keeps one for it.
 /// Default-constructed: nothing known yet (the first evaluation looks at the shapes).
