@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <array>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "detail/axis_overlap.hpp"
 #include "detail/fill_result.hpp"
@@ -60,75 +63,122 @@ bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
   return ((other_closed >> vertex) & 1) == 0;
 }
 
-// True when the other triangle touches axis k's edge, the segment, within `tol` (exact
-// separating-axis test of a segment and a triangle: the segment's normal and the triangle's three
-// normals). A push along the edge's normal is a push back out through that edge; an outline edge
-// the other triangle does not reach (the bottom of a ground triangle whose apex a box touches) is
-// no way out of the body, however allowed its direction.
+// Bits 0..2 of `bits` (a triangle's flags by the caller's edge or vertex index) in CCW order:
+// bit i is the caller's flag of CCW edge or vertex i (`input_edge`, `input_vertex`; a clockwise
+// input swaps edges 0 and 2, vertices 1 and 2). Looked up, not shifted bit by bit.
 template <class T>
-bool edge_touched(const PairFrame<T>& f, int k, T tol) {
-  const bool own_is_a = k < 3;
-  const int i = own_is_a ? k : k - 3;
-  const std::array<Vec2<T>, 3>& own = own_is_a ? f.a : f.b;
-  const std::array<Vec2<T>, 3>& other = own_is_a ? f.b : f.a;
-  const Triangle<T>& own_triangle = own_is_a ? f.ta : f.tb;
-  const Triangle<T>& other_triangle = own_is_a ? f.tb : f.ta;
-  const Vec2<T>& p = own[i];
-  const Vec2<T>& q = own[next3(i)];
-  const Vec2<T>& n = own_triangle.normal(i);
-  const T outside = std::max({n.dot(other[0] - p), n.dot(other[1] - p), n.dot(other[2] - p)});
-  if (outside < -tol) return false;  // the other triangle lies wholly inside the edge's line
-  for (int j = 0; j < 3; ++j) {
-    const Vec2<T>& m = other_triangle.normal(j);
-    if (std::min(m.dot(p - other[j]), m.dot(q - other[j])) > tol) return false;
-  }
-  return true;
+unsigned ccw_edge_bits(const Triangle<T>& t, unsigned bits) {
+  static constexpr std::uint8_t kCcw[2][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {0, 4, 2, 6, 1, 5, 3, 7}};
+  return kCcw[t.flipped()][bits & 7u];
+}
+template <class T>
+unsigned ccw_vertex_bits(const Triangle<T>& t, unsigned bits) {
+  static constexpr std::uint8_t kCcw[2][8] = {{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 4, 5, 2, 3, 6, 7}};
+  return kCcw[t.flipped()][bits & 7u];
 }
 
-// One triangle's least usable axis (`first`: 0 for A's, 3 for B's), trying its axes from the
-// least overlap up (first on ties, as `argmin3`), so that the usual pair checks one. `reached`:
-// whether the other triangle reaches any of its edges (true when an axis is usable; exact when
-// none is). The masks are read first: a pair is certified here because its least axis is refused,
-// and whether the other triangle reaches a refused edge matters only when no allowed one is
-// reached. Callgrind, Collide, against reaching every edge first: slide 96.0 M → 93.3 M and
-// tiles 218.5 M → 214.7 M (full runs), the pyramid 38.2 M → 37.6 M (150 steps).
+// What one triangle's three edges say to the rule (bits 0..2, CCW).
+struct EdgeBits {
+  unsigned allowed = 0;        // edges the masks allow (`axis_allowed`)
+  unsigned wholly_inside = 0;  // edges whose line holds the other triangle wholly inside
+  unsigned cut_other = 0;      // the other triangle's edges both of whose ends lie beyond a line
+};
+
+// The rule's look at one triangle's edges (`own`, its local vertices `own_v`) against the other
+// triangle's local vertices `other`: for edge e (outward normal n) and the other's vertex w,
+// n·v_w − n·p_e is its signed distance from the edge's line, from the products `all_overlaps` and
+// `overlap_on_axis` take; beyond ±`reach` it counts as outside or inside. `internal`: own edges
+// marked internal; `other_closed`: the other's closed vertices (both CCW bits); an axis is
+// refused when its edge is internal or its deep vertex (first on ties, as `overlap_on_axis`) is
+// closed.
 template <class T>
-int least_usable(const PairFrame<T>& f, const Query<T>& q, const std::array<T, 6>& overlap,
-                 int first, bool& reached) {
-  // Sorted by hand (stable: ties keep index order): std::stable_sort's buffer for three indices
-  // cost more than the rule's checks (callgrind, pyramid: 7 M instructions in new/delete).
-  std::array<int, 3> order = {first, first + 1, first + 2};
-  const auto before = [&](int x, int y) { return overlap[y] < overlap[x]; };  // y goes first
-  if (before(order[0], order[1])) std::swap(order[0], order[1]);
-  if (before(order[1], order[2])) std::swap(order[1], order[2]);
-  if (before(order[0], order[1])) std::swap(order[0], order[1]);
-  const T reach = q.margin + touching_band(f);  // the manifold's margin and the touching band
-  std::array<bool, 3> refused{};
-  for (int i = 0; i < 3; ++i) {
-    refused[i] = !axis_allowed(f, q, order[i]);
-    if (!refused[i] && edge_touched(f, order[i], reach)) {
-      reached = true;
-      return order[i];
+EdgeBits edge_bits(const Triangle<T>& own, const std::array<Vec2<T>, 3>& own_v,
+                   const std::array<Vec2<T>, 3>& other, unsigned internal, unsigned other_closed,
+                   T reach) {
+  EdgeBits out;
+  unsigned beyond[3] = {0, 0, 0};  // bits e: the other's vertex w beyond edge e's line
+  for (int e = 0; e < 3; ++e) {
+    const Vec2<T>& n = own.normal(e);
+    const T line = n.dot(own_v[e]);
+    const T d[3] = {n.dot(other[0]), n.dot(other[1]), n.dot(other[2])};
+    T least;
+    int deep;
+    min3(d[0], d[1], d[2], least, deep);
+    const unsigned refused = ((internal >> e) & 1u) | ((other_closed >> deep) & 1u);
+    out.allowed |= (refused ^ 1u) << e;
+    unsigned inside = 0;
+    for (int w = 0; w < 3; ++w) {
+      inside += static_cast<unsigned>(d[w] - line < -reach);
+      beyond[w] |= static_cast<unsigned>(d[w] - line > reach) << e;
     }
+    out.wholly_inside |= static_cast<unsigned>(inside == 3) << e;
   }
-  reached = false;
-  for (int i = 0; i < 3 && !reached; ++i) {
-    reached = refused[i] && edge_touched(f, order[i], reach);
+  for (int j = 0; j < 3; ++j) {
+    out.cut_other |= static_cast<unsigned>((beyond[j] & beyond[next3(j)]) != 0) << j;
   }
-  return -1;
+  return out;
 }
 
-// One triangle's least axis allowed by the masks alone; -1: none.
+#if defined(__SSE2__)
+// The same for float, the three edges in the lanes of one SSE register: the same products,
+// differences and comparisons, so the same bits (tested against the generic one).
+inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<float>, 3>& own_v,
+                          const std::array<Vec2<float>, 3>& other, unsigned internal,
+                          unsigned other_closed, float reach) {
+  const __m128 nx = _mm_setr_ps(own.normal(0).x(), own.normal(1).x(), own.normal(2).x(), 0.0f);
+  const __m128 ny = _mm_setr_ps(own.normal(0).y(), own.normal(1).y(), own.normal(2).y(), 0.0f);
+  const __m128 px = _mm_setr_ps(own_v[0].x(), own_v[1].x(), own_v[2].x(), 0.0f);
+  const __m128 py = _mm_setr_ps(own_v[0].y(), own_v[1].y(), own_v[2].y(), 0.0f);
+  const __m128 line = _mm_add_ps(_mm_mul_ps(nx, px), _mm_mul_ps(ny, py));
+  __m128 d[3];
+  for (int w = 0; w < 3; ++w) {
+    d[w] = _mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(other[w].x())),
+                      _mm_mul_ps(ny, _mm_set1_ps(other[w].y())));
+  }
+  // The deep vertex as `min3`: d1 < d0 picks 1, then d2 below the lesser picks 2.
+  const unsigned one = static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[1], d[0]))) & 7u;
+  const unsigned two =
+      static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[2], _mm_min_ps(d[1], d[0])))) & 7u;
+  const unsigned deep_at[3] = {~(one | two) & 7u, one & ~two, two};
+  unsigned closed_hit = 0;
+  for (int w = 0; w < 3; ++w) closed_hit |= deep_at[w] & (0u - ((other_closed >> w) & 1u));
+  EdgeBits out;
+  out.allowed = ~(internal | closed_hit) & 7u;
+  const __m128 out_reach = _mm_set1_ps(reach);
+  const __m128 in_reach = _mm_set1_ps(-reach);
+  __m128 inside = _mm_castsi128_ps(_mm_set1_epi32(-1));
+  unsigned beyond[3];
+  for (int w = 0; w < 3; ++w) {
+    const __m128 s = _mm_sub_ps(d[w], line);
+    inside = _mm_and_ps(inside, _mm_cmplt_ps(s, in_reach));
+    beyond[w] = static_cast<unsigned>(_mm_movemask_ps(_mm_cmpgt_ps(s, out_reach))) & 7u;
+  }
+  out.wholly_inside = static_cast<unsigned>(_mm_movemask_ps(inside)) & 7u;
+  for (int j = 0; j < 3; ++j) {
+    out.cut_other |= static_cast<unsigned>((beyond[j] & beyond[next3(j)]) != 0) << j;
+  }
+  return out;
+}
+#endif
+
+// The least of the axes `first`..`first + 2` whose bit is set in `axes` (first on ties); -1: none.
 template <class T>
-int least_allowed_by_masks(const PairFrame<T>& f, const Query<T>& q,
-                           const std::array<T, 6>& overlap, int first) {
+int least_of(const std::array<T, 6>& overlap, unsigned axes, int first) {
   int best = -1;
   for (int k = first; k < first + 3; ++k) {
-    if (axis_allowed(f, q, k) && (best < 0 || overlap[k] < overlap[best])) best = k;
+    if (((axes >> k) & 1u) != 0 && (best < 0 || overlap[k] < overlap[best])) best = k;
   }
   return best;
 }
 
+// The axes the rule lets answer (see the file's head): allowed by the masks and touched; when
+// one triangle reaches no edge of the other, the other holds it whole (a body sunk into a large
+// triangle) and the masks alone decide, so that it is pushed out through the outline. An edge is
+// touched within `reach` (exact separating-axis test of the segment and the other triangle)
+// unless the other triangle lies wholly inside its line, or both its ends lie beyond one line of
+// the other triangle: a push along an edge's normal is a push back out through that edge, and an
+// outline edge the other triangle does not reach (the bottom of a ground triangle whose apex a
+// box touches) is no way out of the body, however allowed its direction.
 template <class T>
 AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
                             const std::array<T, 6>& overlap) {
@@ -137,15 +187,19 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   const int all_a = argmin3(overlap, 0);
   const int all_b = argmin3(overlap, 3);
   out.least = select_index(overlap[all_b] < overlap[all_a], all_b, all_a);
-  bool reached_a = false;  // B reaches an edge of A
-  bool reached_b = false;  // A reaches an edge of B
-  out.best_a = least_usable(f, q, overlap, 0, reached_a);
-  out.best_b = least_usable(f, q, overlap, 3, reached_b);
-  if (reached_a && reached_b) return out;
-  // One triangle reaches no edge of the other: the other holds it whole (a body sunk into a large
-  // triangle). The masks alone then decide, so that it is pushed out through the outline.
-  out.best_a = least_allowed_by_masks(f, q, overlap, 0);
-  out.best_b = least_allowed_by_masks(f, q, overlap, 3);
+  const T reach = q.margin + touching_band(f);  // the manifold's margin and the touching band
+  const InternalEdges& m = q.internal_edges;
+  const EdgeBits a = edge_bits(f.ta, f.a, f.b, ccw_edge_bits(f.ta, m.edges & 7u),
+                               ccw_vertex_bits(f.tb, (m.closed_vertices >> 3) & 7u), reach);
+  const EdgeBits b = edge_bits(f.tb, f.b, f.a, ccw_edge_bits(f.tb, (m.edges >> 3) & 7u),
+                               ccw_vertex_bits(f.ta, m.closed_vertices & 7u), reach);
+  const unsigned touched_a = ~(a.wholly_inside | b.cut_other) & 7u;
+  const unsigned touched_b = ~(b.wholly_inside | a.cut_other) & 7u;
+  const unsigned allowed = a.allowed | b.allowed << 3;
+  const unsigned usable =
+      touched_a != 0 && touched_b != 0 ? allowed & (touched_a | touched_b << 3) : allowed;
+  out.best_a = least_of(overlap, usable, 0);
+  out.best_b = least_of(overlap, usable, 3);
   return out;
 }
 
