@@ -148,15 +148,10 @@ struct InstallResult {
   bool ok() const { return status == InstallStatus::Done; }  ///< true when `status == Done`
 };
 
-/// `Config::recycle_distance` by default (metres): Box2D 2.4's `b2_linearSlop`, 5 mm. Why: read
-/// off `dyop compare`'s recycling sweep. There the narrow phase of resting structures drops to
-/// about 0.4× Box2D's own (pyramid 0.40×, stack 0.37× in instructions over their whole runs), and
-/// the error a kept manifold brings stays below the slop — the penetration Box2D's own solver
-/// leaves uncorrected by design. A kept manifold's deepest separation stays within twice the
-/// distance plus `face_hysteresis` of a fresh answer's (tested); measured against the exact answer
-/// at 5 mm, the depth error is 1.8–2.7 mm in falling piles (rain, tall rain, tumbler; Box2D's own
-/// float error there: 0.5 mm) and 3e-5 m in resting structures. At 1 mm it is Box2D's own.
-inline constexpr float default_recycle_distance = b2_linearSlop;
+/// `Config::recycle_distance` by default (metres): 1 mm, a fifth of Box2D 2.4's `b2_linearSlop`.
+/// At it the depth error in falling piles is no larger than Box2D's own contact's
+/// (the trade, measured: docs/design.md, "A kept manifold is sound").
+inline constexpr float default_recycle_distance = 0.001f;
 
 /// What a world's narrow phase may skip: each switch avoids work whose result nobody uses, and
 /// never changes the arithmetic of the work it keeps. With an exact backend (`Dyop`, `Sat`, and
