@@ -18,6 +18,7 @@
 
 #include "dyop/batch.hpp"
 #include "fuzz_input.hpp"
+#include "workloads/batch_arrays.hpp"
 #include "workloads/input_classes.hpp"
 
 namespace dyop {
@@ -43,20 +44,11 @@ workloads::Precision precision_of() {
   return std::is_same_v<T, float> ? workloads::Precision::Float : workloads::Precision::Double;
 }
 
-// The rows of a batch, one column per coordinate, as T holds them.
-template <class T>
+// The pairs of a batch, each also swapped and with A rewound (`push_variants`).
 struct Rows {
-  std::vector<T> c[12];  // ax0 ay0 ax1 ay1 ax2 ay2 bx0 by0 bx1 by1 bx2 by2
+  std::vector<RawPair> pairs;
 
-  void push(const RawPair& p) {
-    for (int i = 0; i < 3; ++i) {
-      c[2 * i].push_back(static_cast<T>(p.a[i].x()));
-      c[2 * i + 1].push_back(static_cast<T>(p.a[i].y()));
-      c[6 + 2 * i].push_back(static_cast<T>(p.b[i].x()));
-      c[7 + 2 * i].push_back(static_cast<T>(p.b[i].y()));
-    }
-  }
-  // The pair, B against A, and both with A rewound.
+  void push(const RawPair& p) { pairs.push_back(p); }
   void push_variants(const RawPair& p) {
     RawPair rewound = p;
     std::swap(rewound.a[1], rewound.a[2]);
@@ -65,11 +57,12 @@ struct Rows {
       push({q.b, q.a});
     }
   }
-  std::size_t size() const { return c[0].size(); }
-  PairBatch<T> batch() const {
-    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(),  c[4].data(),  c[5].data(),
-            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
-            size()};
+  // As T holds them, one column per coordinate.
+  template <class T>
+  workloads::BatchArrays<T> arrays() const {
+    return workloads::BatchArrays<T>(pairs.size(), [&](std::size_t k, int side, int i) {
+      return Vec2<T>((side == 0 ? pairs[k].a[i] : pairs[k].b[i]).template cast<T>());
+    });
   }
 };
 
@@ -82,15 +75,15 @@ struct Answers {
 };
 
 template <class T>
-Answers<T> run(const Rows<T>& rows, Level level, BatchKernel kernel) {
+Answers<T> run(const workloads::BatchArrays<T>& rows, Level level, BatchKernel kernel) {
   Answers<T> a;
-  const std::size_t n = rows.size();
+  const std::size_t n = rows.status.size();
   a.status.assign(n, Status::Invalid);
   a.separation.assign(n, T(0));
   a.normal_x.assign(n, T(0));
   a.normal_y.assign(n, T(0));
   a.error = penetrate_batch(
-      rows.batch(), level,
+      rows.pairs(), level,
       BatchOutput<T>{a.status.data(), a.separation.data(), a.normal_x.data(), a.normal_y.data()},
       kernel);
   return a;
@@ -103,7 +96,8 @@ bool same_bits(T x, T y) {
 
 // Every available vector kernel against the portable one, bit for bit, at both levels.
 template <class T>
-void expect_same_bits(const Rows<T>& rows, const std::string& what) {
+void expect_same_bits(const Rows& pairs, const std::string& what) {
+  const workloads::BatchArrays<T> rows = pairs.arrays<T>();
   for (Level level : {Level::Overlap, Level::Depth}) {
     const Answers<T> want = run(rows, level, BatchKernel::Portable);
     EXPECT_EQ(want.error, BatchError::None);
@@ -112,7 +106,7 @@ void expect_same_bits(const Rows<T>& rows, const std::string& what) {
       const Answers<T> got = run(rows, level, kernel);
       ASSERT_EQ(got.error, BatchError::None);
       int differing = 0;
-      for (std::size_t k = 0; k < rows.size(); ++k) {
+      for (std::size_t k = 0; k < pairs.pairs.size(); ++k) {
         const bool same = got.status[k] == want.status[k] &&
                           same_bits(got.separation[k], want.separation[k]) &&
                           same_bits(got.normal_x[k], want.normal_x[k]) &&
@@ -150,11 +144,11 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnEveryInputClass) 
   using T = TypeParam;
   for (InputClass c : kEveryClass) {
     for (std::uint64_t seed : {std::uint64_t{5}, kStressSeed}) {
-      Rows<T> rows;
+      Rows rows;
       for (const RawPair& p : workloads::make_pairs(c, 1500, seed, precision_of<T>())) {
         rows.push_variants(p);
       }
-      expect_same_bits(rows, std::string(workloads::name(c)) + " seed " + std::to_string(seed));
+      expect_same_bits<T>(rows, std::string(workloads::name(c)) + " seed " + std::to_string(seed));
     }
   }
 }
@@ -163,7 +157,7 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnEveryInputClass) 
 // lane of a block of 16 and in the tail.
 TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnTheFuzzCorpus) {
   using T = TypeParam;
-  Rows<T> rows;
+  Rows rows;
   int inputs = 0;
   for (const auto& entry : std::filesystem::directory_iterator(DYOP_FUZZ_CORPUS)) {
     std::ifstream file(entry.path(), std::ios::binary);
@@ -175,7 +169,7 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnTheFuzzCorpus) {
     for (int copy = 0; copy < 17; ++copy) rows.push_variants(in.pair());
   }
   EXPECT_GT(inputs, 10);
-  expect_same_bits(rows, "fuzz corpus");
+  expect_same_bits<T>(rows, "fuzz corpus");
 }
 
 // Rows whose squared edge lengths the vector lanes' estimate cannot take (redone portably), rows
@@ -198,7 +192,8 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnRedoneAndInvalidR
       {{V2(-5, 0), V2(0, -5), V2(5, 0)}, {V2(-1, 0), V2(1, 0), V2(0, 1)}},
   };
   for (const RawPair& p : workloads::make_valid_pairs(InputClass::General, 40, 4)) {
-    for (double unit : {1e-25, 1e-11, 1e17, 1e25, 1e150}) {
+    const double beyond = std::is_same_v<T, float> ? 1e30 : 1e150;  // T holds the coordinates
+    for (double unit : {1e-25, 1e-11, 1e17, 1e25, beyond}) {
       RawPair scaled = p;
       for (V2& v : scaled.a) v *= unit;
       for (V2& v : scaled.b) v *= unit;
@@ -206,22 +201,23 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnRedoneAndInvalidR
     }
   }
   const auto ordinary = workloads::make_valid_pairs(InputClass::Mixed, 300, 6);
-  Rows<T> rows;
+  Rows rows;
   for (std::size_t k = 0; k < ordinary.size(); ++k) {
     rows.push_variants(ordinary[k]);
     rows.push_variants(special[k % special.size()]);
   }
-  expect_same_bits(rows, "redone and invalid rows");
+  expect_same_bits<T>(rows, "redone and invalid rows");
 }
 
 // A kernel the CPU lacks is refused with a clear error and nothing written; an available one runs.
 TEST(BatchKernelChoice, ForcingAKernelTheCpuLacksIsRefusedAndWritesNothing) {
   const RawPair p{{V2(0, 0), V2(1, 0), V2(0, 1)}, {V2(2, 0), V2(3, 0), V2(2, 1)}};
-  Rows<double> rows;
+  Rows rows;
   rows.push(p);
+  const workloads::BatchArrays<double> one = rows.arrays<double>();
   for (BatchKernel kernel : kForced) {
     Status status = Status::Invalid;
-    const BatchError e = penetrate_batch(rows.batch(), Level::Overlap, {&status}, kernel);
+    const BatchError e = penetrate_batch(one.pairs(), Level::Overlap, {&status}, kernel);
     if (batch_kernel_available(kernel)) {
       EXPECT_EQ(e, BatchError::None) << name(kernel);
       EXPECT_EQ(status, Status::Separated) << name(kernel);
