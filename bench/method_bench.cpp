@@ -5,7 +5,9 @@
 // EPYC (AVX-512) host learned a repeated set of 8192 and timed data-dependent branches as free.
 // Compare methods by their ratio to BM_box2d/<class>/manifold/float in the same run: the
 // machines are shared and noisy. Batch kernel benchmarks time a whole
-// batch per iteration; their items_per_second is pairs per second. BM_stream/<scene>/<backend>
+// batch per iteration; their items_per_second is pairs per second and their label names the kernel
+// that ran (BM_batch: the one Auto picks here; BM_batch-<kernel>: each forced, skipped where the
+// CPU lacks it). BM_stream/<scene>/<backend>
 // replays a Box2D scene's recorded contact updates, one per iteration (box2d-own: b2CollidePolygons).
 #include <benchmark/benchmark.h>
 
@@ -97,7 +99,13 @@ void bm_warm(benchmark::State& state, Method m, InputClass c, Level l) {
 
 // `pairs` 0: the class's distinct pairs (in cache); otherwise a streaming set of that many.
 template <class T>
-void bm_batch(benchmark::State& state, InputClass c, Level l, std::size_t pairs) {
+void bm_batch(benchmark::State& state, InputClass c, Level l, std::size_t pairs,
+              BatchKernel kernel) {
+  if (!batch_kernel_available(kernel)) {
+    state.SkipWithError("this CPU lacks the kernel's instructions");
+    return;
+  }
+  state.SetLabel(name(batch_kernel_used(kernel)));
   const PairSet<T>& s = pairs_of<T>(c);
   // A streaming set repeats the distinct pairs; `state.iterations()` counts batches.
   workloads::BatchArrays<T> arrays(pairs == 0 ? s.size() : pairs,
@@ -108,7 +116,7 @@ void bm_batch(benchmark::State& state, InputClass c, Level l, std::size_t pairs)
   const PairBatch<T> in = arrays.pairs();
   const BatchOutput<T> out = arrays.out();
   for (auto _ : state) {
-    penetrate_batch(in, l, out);
+    penetrate_batch(in, l, out, kernel);
     benchmark::DoNotOptimize(arrays.status.data());
     benchmark::ClobberMemory();
   }
@@ -213,11 +221,17 @@ void register_method(const MethodInfo& row) {
           }
           break;
         case Entry::Batch:
-          benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_batch<T>, c, l, 0);
+          benchmark::RegisterBenchmark(bm(row.name).c_str(), bm_batch<T>, c, l, 0,
+                                       BatchKernel::Auto);
           if (c == InputClass::Overlapping || c == InputClass::Mixed) {
             // Streaming: 1M pairs, far beyond the caches (the memory floor).
             benchmark::RegisterBenchmark(bm((std::string(row.name) + "-stream-1M").c_str()).c_str(),
-                                         bm_batch<T>, c, l, std::size_t{1} << 20);
+                                         bm_batch<T>, c, l, std::size_t{1} << 20,
+                                         BatchKernel::Auto);
+            for (BatchKernel k : {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
+              const std::string forced = std::string(row.name) + "-" + name(k);
+              benchmark::RegisterBenchmark(bm(forced.c_str()).c_str(), bm_batch<T>, c, l, 0, k);
+            }
           }
           break;
       }

@@ -10,8 +10,9 @@
 // - sat: within the exact bound of the exact rational reference (double 1e-12, float 1e-5 of the
 //   pair's size), with the exact status outside the touching band;
 // - dyop: agrees with sat (status, and separation within the touching band);
-// - batch: every row's verdict is `Triangle<T>::make`'s and every valid row is sat's answer, in 9
-//   copies of the row (the AVX2 kernel's 8 lanes and the portable remainder);
+// - batch: every row's verdict is `Triangle<T>::make`'s and every valid row is sat's answer, in 17
+//   copies of the row (the AVX-512 kernel's 16 float lanes and a tail, the AVX2 kernel's 2 × 8),
+//   and every kernel the CPU has gives the portable kernel's bits (status, separation, normal);
 // - lin-canny: also warm-started from a cache made of the remaining bytes (any bytes).
 #include <cmath>
 #include <cstdio>
@@ -77,14 +78,40 @@ void check_exact(const Result<T>& r, const FuzzInput& in, T band) {
 }
 
 template <class T>
+bool same_bits(T x, T y) {
+  return std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+// Every kernel the CPU has against the portable one, bit for bit, on `batch` at Level::Depth.
+template <class T>
+void check_kernels_agree(const FuzzInput& in, const PairBatch<T>& batch,
+                         const workloads::BatchArrays<T>& portable) {
+  for (BatchKernel kernel : {BatchKernel::Avx2, BatchKernel::Avx512}) {
+    if (!batch_kernel_available(kernel)) continue;
+    workloads::BatchArrays<T> got(batch.count, [&](std::size_t, int, int) { return Vec2<T>(); });
+    require(penetrate_batch(batch, Level::Depth, got.out(), kernel) == BatchError::None,
+            "a batch kernel the CPU has refused a plain call", in);
+    for (std::size_t k = 0; k < batch.count; ++k) {
+      require(got.status[k] == portable.status[k] &&
+                  same_bits(got.separation[k], portable.separation[k]) &&
+                  same_bits(got.normal_x[k], portable.normal_x[k]) &&
+                  same_bits(got.normal_y[k], portable.normal_y[k]),
+              "batch kernels differ", in);
+    }
+  }
+}
+
+template <class T>
 void check_batch(const FuzzInput& in, const TriangleOrError<T>& a, const TriangleOrError<T>& b) {
-  constexpr std::size_t rows = 9;
+  constexpr std::size_t rows = 17;
   workloads::BatchArrays<T> arrays(rows, [&](std::size_t, int side, int i) {
     return Vec2<T>(T(in.coords[6 * side + 2 * i]), T(in.coords[6 * side + 2 * i + 1]));
   });
   const PairBatch<T> batch = arrays.pairs();
-  require(penetrate_batch(batch, Level::Depth, arrays.out()) == BatchError::None,
+  require(penetrate_batch(batch, Level::Depth, arrays.out(), BatchKernel::Portable) ==
+              BatchError::None,
           "batch refused a plain call", in);
+  check_kernels_agree(in, batch, arrays);
   const std::vector<Status>& status = arrays.status;
   const std::vector<T>& sep = arrays.separation;
   const std::vector<T>& nx = arrays.normal_x;

@@ -1,5 +1,6 @@
 // The batch kernel against `sat`, per class of input, for float and double and for each kernel
-// (portable and AVX2, each forced): statuses, separations, normals, tails, invalid rows, levels.
+// (portable, AVX2 and AVX-512, each forced): statuses, separations, normals, tails, invalid rows,
+// levels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -144,7 +145,7 @@ class Batch : public ::testing::Test {
  protected:
   using T = typename C::T;
   void SetUp() override {
-    if (!batch_kernel_available(C::kernel)) GTEST_SKIP() << "AVX2 kernel not available here";
+    if (!batch_kernel_available(C::kernel)) GTEST_SKIP() << name(C::kernel) << " not available here";
   }
   BatchError run(const Columns<T>& cols, std::size_t count, Level level, Outputs<T>& out) {
     return penetrate_batch(cols.batch(count), level, out.out(), C::kernel);
@@ -154,14 +155,15 @@ class Batch : public ::testing::Test {
 struct ConfigNames {
   template <class C>
   static std::string GetName(int) {
-    return std::string(std::is_same_v<typename C::T, float> ? "float" : "double") +
-           (C::kernel == BatchKernel::Avx2 ? "_avx2" : "_portable");
+    return std::string(std::is_same_v<typename C::T, float> ? "float_" : "double_") +
+           name(C::kernel);
   }
 };
 
 using Configs =
     ::testing::Types<Config<float, BatchKernel::Portable>, Config<float, BatchKernel::Avx2>,
-                     Config<double, BatchKernel::Portable>, Config<double, BatchKernel::Avx2>>;
+                     Config<float, BatchKernel::Avx512>, Config<double, BatchKernel::Portable>,
+                     Config<double, BatchKernel::Avx2>, Config<double, BatchKernel::Avx512>>;
 TYPED_TEST_SUITE(Batch, Configs, ConfigNames);
 
 // 10 classes × 2,500 = 25,000 seeded pairs, each row checked against sat on the same T input,
@@ -342,14 +344,14 @@ TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
   }
 }
 
-// Squared edge lengths beyond the range of the AVX2 reciprocal square root (below the smallest
-// normal float, or above the largest float in double) send their rows to the portable code: both
-// kernels then give the same bits for them, and sat's answer. Such rows sit at several lanes and
+// Squared edge lengths beyond the range of the vector lanes' reciprocal square root estimate (below
+// the smallest normal float, or above the largest float in double) send their rows to the portable
+// code: every kernel then gives the same bits for them, and sat's answer. Such rows sit at several lanes and
 // in the tail, among ordinary ones.
 TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
   using T = typename TypeParam::T;
   const bool is_float = std::is_same_v<T, float>;
-  // Double: squared lengths below and beyond float's range, where the AVX2 estimate (taken in
+  // Double: squared lengths below and beyond float's range, where the estimate (taken in
   // float) cannot go. Float: min_size (9.1e-13) leaves no square out of range, so no row is redone.
   const double tiny = is_float ? 1e-11 : 1e-25;
   const double huge = is_float ? 1e17 : 1e25;
@@ -493,22 +495,6 @@ TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
     EXPECT_EQ(out.separation[k], Outputs<T>::sentinel);
   }
   EXPECT_NE(std::string(describe(BatchError::UnsupportedLevel)).find("Contact"), std::string::npos);
-}
-
-TEST(BatchKernels, PortableAlwaysRunsAndAvx2IsRefusedWhereUnavailable) {
-  EXPECT_TRUE(batch_kernel_available(BatchKernel::Portable));
-  EXPECT_TRUE(batch_kernel_available(BatchKernel::Auto));
-  const RawPair p{{V2(0, 0), V2(1, 0), V2(0, 1)}, {V2(2, 0), V2(3, 0), V2(2, 1)}};
-  const Columns<double> cols = columns<double>({p});
-  Status status = Status::Invalid;
-  const BatchError e = penetrate_batch(cols.batch(), Level::Overlap, {&status}, BatchKernel::Avx2);
-  if (batch_kernel_available(BatchKernel::Avx2)) {
-    EXPECT_EQ(e, BatchError::None);
-    EXPECT_EQ(status, Status::Separated);
-  } else {
-    EXPECT_EQ(e, BatchError::KernelUnavailable);
-    EXPECT_EQ(status, Status::Invalid);
-  }
 }
 
 }  // namespace

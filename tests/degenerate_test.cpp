@@ -148,7 +148,7 @@ void check_batch(const std::vector<RawPair>& rows) {
   const PairBatch<T> batch{c[0].data(), c[1].data(), c[2].data(),  c[3].data(),
                            c[4].data(), c[5].data(), c[6].data(),  c[7].data(),
                            c[8].data(), c[9].data(), c[10].data(), c[11].data(), n};
-  for (BatchKernel kernel : {BatchKernel::Portable, BatchKernel::Avx2}) {
+  for (BatchKernel kernel : {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
     if (!batch_kernel_available(kernel)) continue;
     std::vector<Status> status(n);
     std::vector<T> sep(n), nx(n), ny(n);

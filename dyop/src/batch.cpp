@@ -2,14 +2,20 @@
 // structure-of-arrays input. The algorithm is written once in detail/batch_kernel.hpp over a
 // "lanes" type: per pair, validation as Triangle<T>::make decides it, the six overlaps in a frame
 // at A's first vertex, and for pairs found apart the exact distance. This file checks the CPU
-// once, sends whole blocks to the AVX2 + FMA lanes (batch_avx2.cpp) when it has both, and to the
-// portable lanes (one pair per step) otherwise. Invariant: both paths give every pair the same
-// status and, to rounding, the same figures as `sat` (tests/batch_test.cpp).
+// once and sends whole blocks to the AVX-512 lanes (batch_avx512.cpp), the AVX2 + FMA lanes
+// (batch_avx2.cpp) or the portable lanes (one pair per step), as `BatchKernel` asks. Invariant:
+// every kernel gives every pair the same bits (tests/batch_kernels_test.cpp), and to rounding
+// `sat`'s figures (tests/batch_test.cpp).
 #include "dyop/batch.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h>
+#define DYOP_BATCH_RSQRT_ESTIMATE 1
+#endif
 
 #include "detail/batch_kernel.hpp"
 
@@ -27,10 +33,18 @@ static_assert(static_cast<std::uint8_t>(Status::Separated) == kStatusSeparated &
 void penetrate_batch_avx2(const BatchView<float>& v, const BatchLimits<float>& lim, bool depth);
 void penetrate_batch_avx2(const BatchView<double>& v, const BatchLimits<double>& lim, bool depth);
 #endif
+#if DYOP_HAVE_BATCH_AVX512
+// batch_avx512.cpp, compiled with -mavx512f -mavx512dq: called only when the CPU has both.
+void penetrate_batch_avx512(const BatchView<float>& v, const BatchLimits<float>& lim, bool depth);
+void penetrate_batch_avx512(const BatchView<double>& v, const BatchLimits<double>& lim,
+                            bool depth);
+#endif
 
 namespace {
 
-// One pair per step; exact division by the square root, so no argument is out of range.
+// One pair per step, with the vector lanes' arithmetic: x86's min and max, fused `fma`, and the
+// same refined estimate for the reciprocal square root where it applies (exact division by the
+// square root elsewhere, where the vector lanes hand their rows to these).
 template <class Scalar>
 struct PortableLanes {
   using T = Scalar;
@@ -42,9 +56,9 @@ struct PortableLanes {
   static void store(T* p, V x) { *p = x; }
   static V splat(T x) { return x; }
   static V infinity() { return std::numeric_limits<T>::infinity(); }
-  static V fma(V a, V b, V c) { return a * b + c; }
-  static V min(V a, V b) { return b < a ? b : a; }
-  static V max(V a, V b) { return a < b ? b : a; }
+  static V fma(V a, V b, V c) { return std::fma(a, b, c); }
+  static V min(V a, V b) { return a < b ? a : b; }
+  static V max(V a, V b) { return a > b ? a : b; }
   static V abs(V a) { return std::abs(a); }
   static V flip(V x, V s) { return std::signbit(s) ? -x : x; }
   static M lt(V a, V b) { return a < b; }
@@ -63,7 +77,19 @@ struct PortableLanes {
   static M select(M m, M a, M b) { return m ? a : b; }
   static unsigned bits(M m) { return m ? 1u : 0u; }
   static V sqrt(V a) { return std::sqrt(a); }
-  static V inv_sqrt(V a) { return T(1) / std::sqrt(a); }
+#if DYOP_BATCH_RSQRT_ESTIMATE
+  static V rsqrt_estimate(V q) {
+    return static_cast<T>(_mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(static_cast<float>(q)))));
+  }
+  static V inv_sqrt(V q) {
+    if (q >= kEstimateMin<T> && q <= kEstimateMax<T>) {
+      return refine_inv_sqrt<PortableLanes>(q, rsqrt_estimate(q));
+    }
+    return T(1) / std::sqrt(q);
+  }
+#else
+  static V inv_sqrt(V q) { return T(1) / std::sqrt(q); }  // no vector kernel to agree with
+#endif
   static void store_status(std::uint8_t* out, M valid, M penetrating, M separated) {
     *out = !valid        ? kStatusInvalid
            : penetrating ? kStatusPenetrating
@@ -90,21 +116,29 @@ bool cpu_has_avx2_fma() {
 #endif
 }
 
-template <class T>
-void run_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth) {
-  if (depth) {
-    SatOverLanes<PortableLanes<T>, true>::run(v, lim);
-  } else {
-    SatOverLanes<PortableLanes<T>, false>::run(v, lim);
-  }
+bool cpu_has_avx512() {
+#if DYOP_HAVE_BATCH_AVX512
+  static const bool yes = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+  }();
+  return yes;
+#else
+  return false;
+#endif
 }
 
 template <class T>
-void run_avx2([[maybe_unused]] const BatchView<T>& v, [[maybe_unused]] const BatchLimits<T>& lim,
-              [[maybe_unused]] bool depth) {
-#if DYOP_HAVE_BATCH_AVX2
-  penetrate_batch_avx2(v, lim, depth);
+void run(BatchKernel kernel, const BatchView<T>& v, const BatchLimits<T>& lim, bool depth) {
+  switch (kernel) {
+#if DYOP_HAVE_BATCH_AVX512
+    case BatchKernel::Avx512: penetrate_batch_avx512(v, lim, depth); return;
 #endif
+#if DYOP_HAVE_BATCH_AVX2
+    case BatchKernel::Avx2: penetrate_batch_avx2(v, lim, depth); return;
+#endif
+    default: run_batch<PortableLanes<T>>(v, lim, depth); return;
+  }
 }
 
 }  // namespace
@@ -127,7 +161,30 @@ template void penetrate_row_portable(const BatchView<double>&, const BatchLimits
 }  // namespace detail
 
 bool batch_kernel_available(BatchKernel kernel) {
-  return kernel != BatchKernel::Avx2 || detail::cpu_has_avx2_fma();
+  switch (kernel) {
+    case BatchKernel::Auto:
+    case BatchKernel::Portable: return true;
+    case BatchKernel::Avx2: return detail::cpu_has_avx2_fma();
+    case BatchKernel::Avx512: return detail::cpu_has_avx512();
+  }
+  return false;
+}
+
+BatchKernel batch_kernel_used(BatchKernel requested) {
+  if (requested != BatchKernel::Auto) return requested;
+  if (detail::cpu_has_avx512()) return BatchKernel::Avx512;
+  if (detail::cpu_has_avx2_fma()) return BatchKernel::Avx2;
+  return BatchKernel::Portable;
+}
+
+const char* name(BatchKernel kernel) {
+  switch (kernel) {
+    case BatchKernel::Auto: return "auto";
+    case BatchKernel::Portable: return "portable";
+    case BatchKernel::Avx2: return "avx2";
+    case BatchKernel::Avx512: return "avx512";
+  }
+  return "unknown";
 }
 
 const char* describe(BatchError e) {
@@ -140,7 +197,8 @@ const char* describe(BatchError e) {
       return "null array: every input array and status, and at Depth separation and both normal "
              "arrays, are needed when count > 0";
     case BatchError::KernelUnavailable:
-      return "AVX2 kernel unavailable: not built (DYOP_BATCH_AVX2) or the CPU lacks AVX2/FMA";
+      return "batch kernel unavailable: not built (DYOP_BATCH_AVX2, DYOP_BATCH_AVX512) or the CPU "
+             "lacks its instructions (AVX2 and FMA; AVX-512 F and DQ)";
   }
   return "unknown batch error";
 }
@@ -164,14 +222,7 @@ BatchError penetrate_batch(const PairBatch<T>& pairs, Level level, const BatchOu
   if (!inputs || !v.status || (depth && (!v.separation || !v.normal_x || !v.normal_y))) {
     return BatchError::NullArray;
   }
-  const detail::BatchLimits<T> lim = detail::limits<T>();
-  const bool avx2 =
-      kernel == BatchKernel::Avx2 || (kernel == BatchKernel::Auto && detail::cpu_has_avx2_fma());
-  if (avx2) {
-    detail::run_avx2(v, lim, depth);
-  } else {
-    detail::run_portable(v, lim, depth);
-  }
+  detail::run(batch_kernel_used(kernel), v, detail::limits<T>(), depth);
   return BatchError::None;
 }
 

@@ -16,16 +16,13 @@ namespace {
 static_assert(kStatusSeparated == 0 && kStatusTouching == 1 && kStatusPenetrating == 2 &&
               kStatusInvalid == 3);
 
-// Eight floats per register. Reciprocal square root: the hardware estimate (relative error
-// ≤ 1.5·2⁻¹²) and one Halley step, whose error is cubic in the estimate's: ≤ 2 ulp.
+// Eight floats per register.
 struct Float8 {
   using T = float;
   using V = __m256;
   using M = __m256;
   static constexpr int kWidth = 8;
   static constexpr bool kHasRangeLimit = true;  // the estimate flushes subnormals to zero
-  static constexpr T kMinSquare = 0x1p-126f;    // smallest normal float
-  static constexpr T kMaxSquare = 0x1.fffffep127f;
   static V load(const T* p) { return _mm256_loadu_ps(p); }
   static void store(T* p, V x) { _mm256_storeu_ps(p, x); }
   static V splat(T x) { return _mm256_set1_ps(x); }
@@ -63,7 +60,8 @@ struct Float8 {
   static V select(M m, V a, V b) { return _mm256_blendv_ps(b, a, m); }
   static unsigned bits(M m) { return static_cast<unsigned>(_mm256_movemask_ps(m)); }
   static V sqrt(V a) { return _mm256_sqrt_ps(a); }
-  static V inv_sqrt(V q) { return halley(q, _mm256_rsqrt_ps(q)); }
+  static V rsqrt_estimate(V q) { return _mm256_rsqrt_ps(q); }
+  static V inv_sqrt(V q) { return refine_inv_sqrt<Float8>(q, rsqrt_estimate(q)); }
 
   static void store_status(std::uint8_t* out, M valid, M penetrating, M separated) {
     __m256i code =
@@ -76,26 +74,15 @@ struct Float8 {
         reinterpret_cast<__m128i*>(out),
         _mm_unpacklo_epi32(_mm256_castsi256_si128(bytes), _mm256_extracti128_si256(bytes, 1)));
   }
-
-  // y ← y·(1 + e/2 + 3e²/8), e = 1 − q·y²: the residual is computed fused, so exact to an ulp.
-  static V halley(V q, V y) {
-    const V e = _mm256_fnmadd_ps(_mm256_mul_ps(q, y), y, _mm256_set1_ps(1.0f));
-    const V p = _mm256_fmadd_ps(e, _mm256_set1_ps(0.375f), _mm256_set1_ps(0.5f));
-    return _mm256_fmadd_ps(_mm256_mul_ps(y, e), p, y);
-  }
 };
 
-// Four doubles per register. Reciprocal square root: the float estimate of 1/sqrt(q) (relative
-// error ε ≤ 1.5·2⁻¹²), then one step of the series y·(1 − e)^(-1/2), e = 1 − q·y², to the 4th
-// order: error ≈ (63/256)·(2ε)⁵ ≈ 5e-17, so ≤ 2 ulp after rounding.
+// Four doubles per register.
 struct Double4 {
   using T = double;
   using V = __m256d;
   using M = __m256d;
   static constexpr int kWidth = 4;
-  static constexpr bool kHasRangeLimit = true;     // the estimate is taken in float
-  static constexpr T kMinSquare = 0x1p-126;        // smallest normal float
-  static constexpr T kMaxSquare = 0x1.fffffep127;  // largest float
+  static constexpr bool kHasRangeLimit = true;  // the estimate is taken in float
   static V load(const T* p) { return _mm256_loadu_pd(p); }
   static void store(T* p, V x) { _mm256_storeu_pd(p, x); }
   static V splat(T x) { return _mm256_set1_pd(x); }
@@ -131,14 +118,8 @@ struct Double4 {
   static unsigned bits(M m) { return static_cast<unsigned>(_mm256_movemask_pd(m)); }
   static V sqrt(V a) { return _mm256_sqrt_pd(a); }
 
-  static V inv_sqrt(V q) {
-    const V y = _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(q)));
-    const V e = _mm256_fnmadd_pd(_mm256_mul_pd(q, y), y, _mm256_set1_pd(1.0));
-    V p = _mm256_fmadd_pd(e, _mm256_set1_pd(35.0 / 128), _mm256_set1_pd(5.0 / 16));
-    p = _mm256_fmadd_pd(p, e, _mm256_set1_pd(3.0 / 8));
-    p = _mm256_fmadd_pd(p, e, _mm256_set1_pd(1.0 / 2));
-    return _mm256_fmadd_pd(_mm256_mul_pd(y, e), p, y);
-  }
+  static V rsqrt_estimate(V q) { return _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(q))); }
+  static V inv_sqrt(V q) { return refine_inv_sqrt<Double4>(q, rsqrt_estimate(q)); }
 
   static void store_status(std::uint8_t* out, M valid, M penetrating, M separated) {
     __m256i code =
@@ -153,23 +134,14 @@ struct Double4 {
   }
 };
 
-template <class L>
-void run(const BatchView<typename L::T>& v, const BatchLimits<typename L::T>& lim, bool depth) {
-  if (depth) {
-    SatOverLanes<L, true>::run(v, lim);
-  } else {
-    SatOverLanes<L, false>::run(v, lim);
-  }
-}
-
 }  // namespace
 
 void penetrate_batch_avx2(const BatchView<float>& v, const BatchLimits<float>& lim, bool depth) {
-  run<Float8>(v, lim, depth);
+  run_batch<Float8>(v, lim, depth);
 }
 
 void penetrate_batch_avx2(const BatchView<double>& v, const BatchLimits<double>& lim, bool depth) {
-  run<Double4>(v, lim, depth);
+  run_batch<Double4>(v, lim, depth);
 }
 
 }  // namespace dyop::detail

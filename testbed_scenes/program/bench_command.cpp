@@ -46,7 +46,8 @@ int run(const BenchArgs& args) {
   // With `--json -` standard output carries the JSON alone; the tables go to standard error.
   std::ostream& tables = args.json == "-" ? std::cerr : std::cout;
   const std::vector<experiments::BenchRecord> records = experiments::run_bench(options, std::cerr);
-  tables << "Measured on " << report::machine_description() << ":\n";
+  tables << "Measured on " << report::machine_description() << " ("
+         << report::batch_kernel_description() << "):\n";
   report::bench_records(records).write_table(tables);
   std::string sections;  // the report's scaling and streams sections
   // Created before the sections write into it; when it cannot be, its first problem says so.

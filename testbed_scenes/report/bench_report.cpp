@@ -111,7 +111,7 @@ void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir
          "ratio to Box2D's `b2CollidePolygons` (full manifold, float) on the same class in the "
          "same run. Errors are |depth − exact depth| / pair size against the exact rational "
          "reference. Measured on "
-      << machine_description()
+      << machine_description() << " (" << batch_kernel_description() << ")"
       << ": ratios move between hosts of one machine kind (AVX-512 or not), so name the CPU "
          "beside any figure taken from here.\n\n![time against error](time_vs_error.svg)\n\n";
     described.write_markdown(o);

@@ -3,6 +3,8 @@
 #include <fstream>
 #include <thread>
 
+#include "dyop/batch.hpp"
+
 namespace dyop::report {
 
 std::string machine_description() {
@@ -15,6 +17,10 @@ std::string machine_description() {
     break;
   }
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " hardware threads";
+}
+
+std::string batch_kernel_description() {
+  return std::string("batch kernel ") + name(batch_kernel_used());
 }
 
 }  // namespace dyop::report

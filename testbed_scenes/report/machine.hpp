@@ -12,4 +12,8 @@ namespace dyop::report {
 /// "unknown CPU, N hardware threads" where /proc/cpuinfo does not say.
 std::string machine_description();
 
+/// The batch kernel `penetrate_batch` runs here unless one is forced (`dyop::batch_kernel_used`),
+/// as "batch kernel avx512": its time depends on the CPU's vector extensions.
+std::string batch_kernel_description();
+
 }  // namespace dyop::report

@@ -6,8 +6,9 @@
 /// Algorithm: per pair, as `sat` (`dyop/sat.hpp`): the minimum over the six edge-normal axes of
 /// the Minkowski difference of the overlap `max_A(u·a) − min_B(u·b)`, in a frame centred on A's
 /// first vertex; a pair found apart gets the exact Euclidean distance. Every row is validated
-/// exactly as `Triangle<T>::make` validates it (same arithmetic, same decision). Rows are done 8
-/// (float) or 4 (double) at a time with AVX2 + FMA when the CPU has them, else one at a time.
+/// exactly as `Triangle<T>::make` validates it (same arithmetic, same decision). Rows are done 16
+/// (float) or 8 (double) at a time with AVX-512, 8 or 4 with AVX2 + FMA, or one at a time, as
+/// `BatchKernel` chooses; every kernel gives every row the same bits.
 /// For pairs apart the distance is certified without the 18 vertex–edge distances whenever
 /// possible: the deepest vertex along the widest-gap axis projecting inside that axis's edge
 /// (the gap is then the distance), or the nearest vertex pair supporting both triangles along its
@@ -22,9 +23,11 @@
 /// Accuracy against `sat`: the same status except within rounding of the edge of the touching
 /// band; separation within a few eps × the pair's size (measured over 25,000 seeded pairs of every
 /// input class: ≤ 4e-16 in double, ≤ 2e-7 in float, relative to the pair's size); the same
-/// normal except where two axes (or closest-feature pairs) tie. The AVX2 path's reciprocal square
-/// roots are the hardware estimate refined to within 2 ulp (float: one Halley step; double: a
-/// float estimate and one 4th-order step); the portable path divides by `std::sqrt`.
+/// normal except where two axes (or closest-feature pairs) tie. Reciprocal square roots are the
+/// CPU's 12-bit estimate (`rsqrtps`, taken in float) refined to within 2 ulp (float: one Halley
+/// step; double: one 4th-order step), or 1/`std::sqrt` for squares outside float's normal range:
+/// the bits are the same from every kernel on one CPU, and may differ in the last 2 ulp between
+/// CPU vendors (their estimates differ).
 
 #include <cstddef>
 #include <cstdint>
@@ -72,17 +75,25 @@ struct BatchOutput {
   T* normal_y = nullptr;  ///< Level::Depth: y of the unit normal; see `normal_x`
 };
 
-/// Which code runs a batch. Both compute the same answers (within the accuracy stated above).
+/// Which code runs a batch. All give the same answer, bit for bit (status, separation, normal).
 enum class BatchKernel : std::uint8_t {
-  Auto,      ///< AVX2 when available, else portable
+  Auto,      ///< the fastest available: Avx512, else Avx2, else Portable
   Portable,  ///< plain C++, one pair per step: any CPU
   Avx2,      ///< 8 float or 4 double pairs per step with AVX2 and FMA
+  Avx512,    ///< 16 float or 8 double pairs per step with AVX-512 (F and DQ)
 };
 
-/// True when `kernel` can run here: Auto and Portable always; Avx2 when the library was built
-/// with `DYOP_BATCH_AVX2` (on x86-64 with GCC or Clang) and the CPU has AVX2 and FMA (asked
-/// once, with `__builtin_cpu_supports`).
+/// True when `kernel` can run here: Auto and Portable always; Avx2 (Avx512) when the library was
+/// built with `DYOP_BATCH_AVX2` (`DYOP_BATCH_AVX512`), on x86-64 with GCC or Clang, and the CPU
+/// has AVX2 and FMA (AVX-512 F and DQ), asked once with `__builtin_cpu_supports`.
 bool batch_kernel_available(BatchKernel kernel);
+
+/// The kernel `penetrate_batch` runs when asked for `requested`: Auto resolves to the fastest
+/// available here; any other is itself (available or not: see `batch_kernel_available`).
+BatchKernel batch_kernel_used(BatchKernel requested = BatchKernel::Auto);
+
+/// The kernel's one spelling: "auto", "portable", "avx2", "avx512".
+const char* name(BatchKernel kernel);
 
 /// What `penetrate_batch` could not do; on any error it writes nothing.
 enum class BatchError : std::uint8_t {
@@ -90,7 +101,7 @@ enum class BatchError : std::uint8_t {
   UnsupportedLevel,   ///< Level::Contact or Level::Manifold: use a per-pair method (`sat`)
   NullArray,          ///< count > 0 and an input array, `status`, or at Level::Depth a
                       ///< separation or normal array, is null
-  KernelUnavailable,  ///< BatchKernel::Avx2 asked for where it cannot run
+  KernelUnavailable,  ///< a kernel forced where it cannot run (`batch_kernel_available`)
 };
 
 /// A static, human-readable description of `e`.

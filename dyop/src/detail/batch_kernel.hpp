@@ -1,27 +1,36 @@
 #pragma once
 // Internal: the batch kernel behind `penetrate_batch`, written once over a "lanes" type so the
-// portable path (one pair per step) and the AVX2 path (8 float or 4 double pairs per instruction)
-// run the same algorithm: validation as `Triangle<T>::make` decides it, the six overlaps of `sat`
-// in a frame at A's first vertex, and for pairs found apart the exact distance, settled by one of
-// two certificates or, failing both (pairs with parallel edges), by all vertex–edge distances.
-// The only branches on the data are per block: "is any pair apart", "does any need more".
+// portable path (one pair per step), the AVX2 path (8 float or 4 double pairs per instruction) and
+// the AVX-512 path (16 or 8) run the same algorithm: validation as `Triangle<T>::make` decides it,
+// the six overlaps of `sat` in a frame at A's first vertex, and for pairs found apart the exact
+// distance, settled by one of two certificates or, failing both (pairs with parallel edges), by
+// all vertex–edge distances. The only branches on the data are per block: "is any pair apart",
+// "does any need more".
+//
+// Every lanes type performs the same IEEE operations in the same order on each pair, so all
+// kernels give the same bits (tests/batch_kernels_test.cpp): every translation unit that includes
+// this header is compiled with -ffp-contract=off, fusing happens only where `fma` is called, and
+// the reciprocal square root is one shared refinement (`refine_inv_sqrt`) of the same hardware
+// estimate (the SSE `rsqrtps` family, the same table for one lane or sixteen on a given CPU).
 //
 // This header includes no library header (no Eigen, no iostream) and calls no function of the
-// standard library: the AVX2 translation unit includes it and is compiled with -mavx2 -mfma, and
-// any inline function it emitted could be the copy the linker keeps for the whole program,
-// running AVX2 code on a CPU without it. Every template here is instantiated with the including
-// file's lanes type, which lives in an unnamed namespace, so every instantiation is local.
+// standard library: the AVX2 and AVX-512 translation units include it and are compiled for those
+// instruction sets, and any inline function it emitted could be the copy the linker keeps for the
+// whole program, running AVX2 code on a CPU without it. Every template here is instantiated with
+// the including file's lanes type, which lives in an unnamed namespace, so every instantiation is
+// local.
 //
 // A lanes type `L` provides:
 // - `T` (scalar), `V` (kWidth scalars, with + - * / and unary -), `M` (a mask), `kWidth`;
-// - `kHasRangeLimit`: true when `inv_sqrt` takes only arguments in [kMinSquare, kMaxSquare]
+// - `kHasRangeLimit`: true when `inv_sqrt` takes only arguments in [kEstimateMin, kEstimateMax]
 //   (rows with a squared edge length outside are redone by the portable lanes);
-// - load, store, splat, infinity, fma (a·b + c, fused where the lanes can), min, max, abs,
-//   flip (x with its sign flipped where s is negative), sqrt, inv_sqrt;
-// - lt, gt, both, either, but_not (a and not b), select (m ? a : b), bits (lane k's mask as
-//   bit k), min_where (m ? min(least, x) : least);
+// - load, store, splat, infinity, fma (a·b + c, rounded once), min and max (x86's: `a < b ? a :
+//   b`, `a > b ? a : b`), abs, flip (x with its sign flipped where s is negative), sqrt,
+//   rsqrt_estimate (the hardware estimate of 1/sqrt, taken in float), inv_sqrt;
+// - lt, gt, both, either, but_not (a and not b), select (m ? a : b, for values and masks), bits
+//   (lane k's mask as bit k), min_where (m ? min(least, x) : least);
 // - for arguments known to be non-negative and not NaN: min_nonneg, max_nonneg, lt_nonneg (the
-//   AVX2 lanes do them in the integer unit where they can: such floats order as their bits do);
+//   vector lanes do them in the integer unit where they can: such floats order as their bits do);
 // - within (every one of n coordinates finite with magnitude ≤ limit; a NaN may instead be left
 //   to the flatness test, which it always fails) and store_status (the codes below).
 
@@ -57,14 +66,41 @@ struct BatchLimits {
   T touching_tolerance;    // touching_tolerance<T>()
 };
 
-// Recomputes one row with the portable lanes (defined in batch.cpp): the AVX2 path hands it the
-// rows its reciprocal square root cannot take (a squared edge length out of its range).
+// The squared lengths the estimate takes: normal floats (it is taken in float, and flushes
+// subnormals to zero).
+template <class T>
+inline constexpr T kEstimateMin = T(0x1p-126f);
+template <class T>
+inline constexpr T kEstimateMax = T(0x1.fffffep127f);
+
+// 1/sqrt(q) from the estimate y of `L::rsqrt_estimate` (relative error ε ≤ 1.5·2⁻¹²), the same
+// operations in every lanes type. Float: one Halley step, y·(1 + e/2 + 3e²/8) with e = 1 − q·y²,
+// whose error is cubic in ε: ≤ 2 ulp. Double: the series y·(1 − e)^(-1/2) to the 4th order, error
+// ≈ (63/256)·(2ε)⁵ ≈ 5e-17: ≤ 2 ulp. The residual e is fused, so exact to an ulp.
+template <class L>
+typename L::V refine_inv_sqrt(typename L::V q, typename L::V y) {
+  using T = typename L::T;
+  using V = typename L::V;
+  const V e = L::fma(-(q * y), y, L::splat(T(1)));
+  V p;
+  if constexpr (sizeof(T) == sizeof(float)) {
+    p = L::fma(e, L::splat(T(0.375)), L::splat(T(0.5)));
+  } else {
+    p = L::fma(e, L::splat(T(35.0 / 128)), L::splat(T(5.0 / 16)));
+    p = L::fma(p, e, L::splat(T(3.0 / 8)));
+    p = L::fma(p, e, L::splat(T(1.0 / 2)));
+  }
+  return L::fma(y * e, p, y);
+}
+
+// Recomputes one row with the portable lanes (defined in batch.cpp): the vector paths hand it the
+// rows their reciprocal square root cannot take (a squared edge length out of its range).
 template <class T>
 void penetrate_row_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth,
                             std::size_t row);
 
 // `sat`'s status (and with kDepth its separation and normal) for `L::kWidth` pairs at a time: the
-// algorithm itself, run with the portable or the AVX2 lanes as `dyop::BatchKernel` chooses.
+// algorithm itself, run with the lanes `dyop::BatchKernel` chooses.
 template <class L, bool kDepth>
 struct SatOverLanes {
   using T = typename L::T;
@@ -339,8 +375,8 @@ struct SatOverLanes {
           L::min_nonneg(L::min_nonneg(p.qa[0], p.qa[1]), L::min_nonneg(p.qa[2], p.qb[0])),
           L::min_nonneg(p.qb[1], p.qb[2]));
       const M out_of_range =
-          L::either(L::lt_nonneg(q_least, L::splat(L::kMinSquare)),
-                    L::lt_nonneg(L::splat(L::kMaxSquare), L::max_nonneg(q_max_a, q_max_b)));
+          L::either(L::lt_nonneg(q_least, L::splat(kEstimateMin<T>)),
+                    L::lt_nonneg(L::splat(kEstimateMax<T>), L::max_nonneg(q_max_a, q_max_b)));
       redo = L::bits(L::both(valid, out_of_range));
     }
     V r[6];
@@ -453,5 +489,16 @@ struct SatOverLanes {
     }
   }
 };
+
+// Every row of `v` with the lanes `L`, at Level::Depth or (depth false) Level::Overlap.
+template <class L>
+void run_batch(const BatchView<typename L::T>& v, const BatchLimits<typename L::T>& lim,
+               bool depth) {
+  if (depth) {
+    SatOverLanes<L, true>::run(v, lim);
+  } else {
+    SatOverLanes<L, false>::run(v, lim);
+  }
+}
 
 }  // namespace dyop::detail
