@@ -25,6 +25,7 @@ WorldBuild build_slivers_far(World& world, workloads::Random& rng);
 WorldBuild build_mixed(World& world, workloads::Random& rng);
 WorldBuild build_slide(World& world, workloads::Random& rng);
 WorldBuild build_tiles(World& world, workloads::Random& rng);
+WorldBuild build_tile_map(World& world, workloads::Random& rng);
 
 /// The builder of the catalogue's Box2D scene `name`, or nullptr (unknown, or `paper`, which has
 /// no Box2D world). Seed its `workloads::Random` with the scene's seed, as `make_scene` does.

@@ -8,6 +8,8 @@
 // while it goes (disabled and enabled, or moved far away and back by `SetTransform`). Box2D's own
 // contact collides each fixture alone; the plug-in's internal-edge rule joins the edges that
 // static bodies share and those that T-junctions cover.
+// `tile-map`: a crowd on a tile map as a level has it: lanes of tiles as bodies, boxes and L
+// bodies sliding along them in a row, and debris falling onto a lane of its own.
 #include <cmath>
 #include <array>
 #include <memory>
@@ -170,7 +172,40 @@ std::shared_ptr<ChangingGround> add_ground(World& world, const Ground& g, float 
   return g.layout == Layout::Changing ? changing : nullptr;
 }
 
+// The tile map: kMapLanes lanes of tiles as bodies, kMapSliders sliders on each, spaced
+// kMapSpacing apart (a multiple of a tile: each starts kLaunchOffset past a junction), and a
+// lane below them where kMapDebris triangles fall. Why 3 m/s: a slider then moves 5 cm a step,
+// so recycling keeps none of its contacts and every one runs the rule.
+constexpr int kMapLanes = 4;
+constexpr int kMapSliders = 12;
+constexpr float kMapSpacing = 1.5f;
+constexpr float kMapSpeed = 3.0f;
+constexpr int kMapDebris = 60;
+
 }  // namespace
+
+WorldBuild build_tile_map(World& world, workloads::Random& rng) {
+  WorldBuild build;
+  const Ground lanes{"tiles", Layout::Tiles};
+  for (int lane = 0; lane < kMapLanes; ++lane) {
+    const float top = -kLaneGap * static_cast<float>(lane);
+    add_ground(world, lanes, top, slider_ice);
+    const std::string name = "lane-" + std::to_string(lane + 1);
+    for (int i = 0; i < kMapSliders; ++i) {
+      const float x = kLaunchOffset + kMapSpacing * static_cast<float>(i) + jitter(rng, kJitter);
+      build.sliders.push_back(launch_slider(world, i % 2 == 0 ? "box" : "L", name, x, top, kMapSpeed));
+    }
+  }
+  const float debris_top = -kLaneGap * static_cast<float>(kMapLanes);
+  add_ground(world, lanes, debris_top, slider_rubber);
+  const float length = kColumns * kTile;
+  for (int i = 0; i < kMapDebris; ++i) {
+    const b2Vec2 at(kStart + length * (static_cast<float>(i) + 0.5f) / kMapDebris + jitter(rng, 0.1),
+                    debris_top + rng.uniformf(0.5, 2.5));
+    add_random_triangle(world, rng, at, rng.uniform(0.1, 0.25));
+  }
+  return build;
+}
 
 WorldBuild build_tiles(World& world, workloads::Random& rng) {
   WorldBuild build;
