@@ -40,37 +40,38 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// True when a world's contact has no masks found under its stamp as it is now (see
-// `TriangleContact::internal_edges_stamp`; the rule on), or they were found before a change of
-// the world's fixture count and the pair has moved since as far as such a change could matter
-// (`masks_still_hold`; `recycling`: the pose of the last answer afresh). A new stamp is recorded at
-// once, and a contact with a static body then tells the others
+// True when a world's contact holds no masks that hold now (`masks`; the rule on): none found
+// under its stamp as it is now (see `TriangleContact::internal_edges_stamp`), or found before a
+// change of the world's fixture count and the pair has moved since as far as such a change could
+// matter (`masks_hold`; `recycling`: the pose of the last answer afresh). A new stamp is recorded
+// at once, and a contact with a static body then tells the others
 // (`TriangleContact::internal_edges_stamp_moved`); a new fixture count tells nobody (every contact
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
 // contacts a broad phase makes never come within the margin, and a static triangle's masks cost
 // about 11,000 instructions (a query of the world's broad phase and the covering tests).
 bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
-                   ContactMemory& memory, const TriangleContact& contact,
+                   const ContactMemory& memory, FoundMasks& masks, const TriangleContact& contact,
                    const ManifoldRecycling* recycling) {
   const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
-  if (memory.internal_edges_stamp != stamp) {
-    contact.internal_edges_stamp_moved(memory.internal_edges_stamp);
-    memory.internal_edges_stamp = stamp;
-    memory.internal_edges_found = false;
+  if (masks.stamp != stamp) {
+    contact.internal_edges_stamp_moved(masks.stamp);
+    masks.stamp = stamp;
+    masks.motion = FoundMasks::not_found;
   } else {
-    notice_fixture_count(memory, contact);
-    if (memory.internal_edges_motion >= 0) {
+    notice_fixture_count(masks, contact.world_fixtures());
+    if (masks.motion >= 0 && masks.motion != FoundMasks::not_found) {
       // Since the last answer afresh, which had not seen the count move or followed the motion
       // already: every evaluation in between kept its manifold (within the recycling distance of
       // that pose) or was a skip (then the motion is infinite).
       const float lever = recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius);
-      memory.internal_edges_motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid,
-                                                                    lever, setting.epoch)
-                                                : HUGE_VALF;
-      if (!masks_still_hold(memory, setting)) memory.internal_edges_found = false;
+      masks.motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid, lever, setting.epoch)
+                                : HUGE_VALF;
+      if (!masks_hold(masks, setting.config.recycle_distance)) {
+        masks.motion = FoundMasks::not_found;
+      }
     }
   }
-  return !memory.internal_edges_found;
+  return masks.motion == FoundMasks::not_found;
 }
 
 // True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
@@ -99,7 +100,7 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
-                const ManifoldRecycling* recycling) {
+                FoundMasks* masks, const ManifoldRecycling* recycling) {
   Query<float> query;
   query.level = Level::Manifold;
   query.margin = pair.a.m_radius + pair.b.m_radius;  // the skins: speculative, as Box2D's
@@ -110,27 +111,25 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   PairState* const state = setting.config.lin_canny_cache ? &memory.warm_start : &cold;
   const Triangle<float> a = placed(pair.a);
   const Triangle<float> b = placed(pair.b, b_in_a);
-  // The masks: the fixtures' fixed edge data; else a world's contact's own when found under its
-  // stamp; a caller's (`collide_polygons`) as given.
+  // The masks: the fixtures' fixed edge data; else a world's contact's own when they hold; a
+  // caller's (`collide_polygons`) as given.
   bool put_off = false;
   if (setting.internal_edges) {
     const std::optional<InternalEdges> fixed =
         contact ? contact->fixed_internal_edges() : std::nullopt;
-    memory.internal_edges_fixed = fixed.has_value();
     if (fixed) {
       memory.internal_edges = *fixed;
+      masks->stamp = FoundMasks::fixed_stamp;
     } else {
-      put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *contact, recycling);
+      put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *masks, *contact, recycling);
     }
     if (!put_off) query.internal_edges = memory.internal_edges;
   }
   Result<float> r = penetrate(*setting.method, a, b, query, state);
   if (put_off && needs_masks(r, query.margin)) {
-    memory.internal_edges_fixtures = contact->world_fixtures();
-    memory.internal_edges_motion = -1;
-    memory.internal_edges = contact->find_internal_edges(
-        memory.internal_edges_stamp, memory.internal_edges_fixtures, setting.epoch);
-    memory.internal_edges_found = true;
+    masks->found_now(contact->world_fixtures());
+    memory.internal_edges =
+        contact->find_internal_edges(masks->stamp, masks->fixtures, setting.epoch);
     query.internal_edges = memory.internal_edges;
     // The methods with the rule (`dyop`, `sat`) keep no pair state: this run answers afresh.
     if (query.internal_edges.any()) r = penetrate(*setting.method, a, b, query, state);

@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "dyop/box2d.hpp"
+#include "found_masks.hpp"
 #include "installation.hpp"
 #include "recycling.hpp"
 #include "stats.hpp"
@@ -46,15 +47,16 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 
 // The setting's method on two valid triangles (`b_in_a`: B's body frame given in A's), with the
 // pair's internal-edge masks when the rule is on: `contact` (a world's contact, whose memory is
-// `memory`) finds them when its memory's are not current, and only once an answer without them
-// is not apart beyond the skins (it runs the method again with them); nullptr
-// (`collide_polygons`): the caller set them in `memory`. True when it answered and `manifold`
-// holds its answer; false when the method could not answer (`Status::Invalid`) and Box2D's code
-// must. `recycling`: the contact's kept pose, as the last answer afresh left it (it bounds how far
-// the pair moved since: see `ContactMemory::internal_edges_motion`), nullptr for none.
+// `memory` and `masks`) reads them from its fixtures' fixed edge data, else finds them when its
+// own do not hold, and only once an answer without them is not apart beyond the skins (it runs
+// the method again with them); nullptr (`collide_polygons`): the caller set them in `memory`.
+// True when it answered and `manifold` holds its answer; false when the method could not answer
+// (`Status::Invalid`) and Box2D's code must. `recycling`: the contact's kept pose, as the last
+// answer afresh left it (it bounds how far the pair moved since: `FoundMasks::motion`), nullptr
+// for none.
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
-                const ManifoldRecycling* recycling);
+                FoundMasks* masks, const ManifoldRecycling* recycling);
 
 // Separation of the pair along face `face` (0..2: A's edge, 3..5: B's; frames as in
 // `b_in_a`, B's body frame given in A's), with the other triangle's whole support: a lower bound
@@ -92,54 +94,26 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
   return (b2Mul(b_in_a, b.m_centroid) - a.m_centroid).LengthSquared() > reach_sum * reach_sum;
 }
 
-// How far a pair may have moved since it first saw the world's fixture count move, before it
-// finds its masks again (metres; see `ContactMemory::internal_edges_motion`). Why this: a fixture
-// made or destroyed with no contact to either body of the pair had no fattened broad-phase box
-// overlapping theirs. Box2D fattens a box by `b2_aabbExtension` (0.1 m) on every side when it
-// (re)inserts it, and a moving body may then travel to the edge of its own, so only the other's
-// margin is sure: the fixture lay more than 0.1 m from the pair, and its edges come within the
-// skins (2 cm) only once the pair moved 0.08 m. Half the margin stays clear of that.
-constexpr float masks_reach = 0.5f * b2_aabbExtension;
-
-// True while a contact that follows its motion (`ContactMemory::internal_edges_motion` ≥ 0) may
-// keep its masks: the motion summed so far, plus twice the recycling distance (a kept manifold's
-// pose may lie that far from the pose at the change, before it and after the last answer
-// afresh), is below `masks_reach`. Always true for one that does not follow.
-inline bool masks_still_hold(const ContactMemory& memory, const Setting& setting) {
-  return memory.internal_edges_motion < 0 ||
-         memory.internal_edges_motion + 2 * setting.config.recycle_distance < masks_reach;
-}
-
-// A world's contact whose masks were found under the fixture count `ContactMemory::
-// internal_edges_fixtures` sees the count as it is now: once it moved, the pair's motion is
-// followed from then on (`internal_edges_motion` from below 0 to 0), whatever the count does
-// after (it may come back to its old value by other changes). At every evaluation that may read
-// the masks: a kept manifold and an answer afresh.
-inline void notice_fixture_count(ContactMemory& memory, const TriangleContact& contact) {
-  if (memory.internal_edges_fixtures != contact.world_fixtures() &&
-      memory.internal_edges_motion < 0 && memory.internal_edges_found) {
-    memory.internal_edges_motion = 0;
-  }
-}
-
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
 // (their stamp moved, or they were forgotten) recomputes; a change of the world's fixture count
-// alone recomputes only once the pair may have moved toward it (`masks_still_hold`): one near
-// the pair makes or ends a contact with one of its bodies, which forgets the masks at once.
+// alone recomputes only once the pair may have moved toward it (`masks_hold`): one near the pair
+// makes or ends a contact with one of its bodies, which forgets the masks at once.
 inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
-                           ContactMemory& memory, const ManifoldRecycling& recycling,
-                           const TriangleContact* contact, float margin) {
+                           const ContactMemory& memory, const ManifoldRecycling& recycling,
+                           const TriangleContact* contact, FoundMasks* masks, float margin) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
   if (!recycling.keeps(b_in_a, p.b.m_centroid, recycle_lever(memory.radius_sum, margin),
                        setting.epoch)) {
     return false;
   }
   if (!setting.internal_edges || !contact) return true;
-  if (memory.internal_edges_fixed) return true;  // changed only by a refresh, which recomputes
-  if (memory.internal_edges_stamp != contact->internal_edges_stamp(setting.epoch)) return false;
-  notice_fixture_count(memory, *contact);
-  return masks_still_hold(memory, setting);
+  if (masks->fixed()) return true;  // changed only by a refresh, which recomputes
+  if (masks->stamp != contact->internal_edges_stamp(setting.epoch)) return false;
+  // Put off: the manifold was answered without masks (apart beyond the margin, the same under any).
+  if (masks->motion == FoundMasks::not_found) return true;
+  notice_fixture_count(*masks, contact->world_fixtures());
+  return masks_hold(*masks, setting.config.recycle_distance);
 }
 
 // How far a manifold the method just computed may move before a recompute: the setting's
@@ -168,11 +142,11 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
 [[gnu::always_inline]] inline bool kept(const b2Manifold& manifold, const Setting& setting,
                                         const PolygonPair& p, ContactMemory& memory,
                                         const ManifoldRecycling& recycling,
-                                        const TriangleContact* contact) {
+                                        const TriangleContact* contact, FoundMasks* masks) {
   // Only a method's run remembers a pose, so the shapes are triangles; an uninstall keeps the
   // epoch, hence the method's check.
   if (setting.method && keeps_manifold(setting, p, b2MulT(p.xf_a, p.xf_b), memory, recycling,
-                                       contact, p.a.m_radius + p.b.m_radius)) {
+                                       contact, masks, p.a.m_radius + p.b.m_radius)) {
     ThreadCounters& count = counters();
     count.triangle_pairs[static_cast<int>(*setting.backend)].add();
     count.recycled.add();
@@ -206,6 +180,7 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
                                                  const PolygonPair& p, const b2Transform& b_in_a,
                                                  ContactMemory& memory,
                                                  const TriangleContact* contact,
+                                                 FoundMasks* masks,
                                                  ManifoldRecycling* recycling) {
   ThreadCounters& count = counters();
   count.triangle_pairs[static_cast<int>(*setting.backend)].add();
@@ -214,7 +189,7 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
       validate_triangles(p.a, p.b, memory);
     }
     if (memory.shapes == ContactMemory::Shapes::Triangles &&
-        run_method(manifold, setting, p, b_in_a, memory, contact, recycling)) {
+        run_method(manifold, setting, p, b_in_a, memory, contact, masks, recycling)) {
       if (manifold->pointCount > 0) count.manifolds.add();
       if (recycling && setting.recycles()) {
         const float slack =
@@ -270,17 +245,17 @@ inline bool triangle_shapes(const ContactMemory& memory) {
 
 // The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
 // uncounted, exactly as Box2D's own contact); `memory` is the pair's state, updated; `contact`
-// the world's contact it belongs to, if any, and `recycling` its kept manifold's pose (both
-// nullptr for `collide_polygons`). All three steps, in one function.
+// the world's contact it belongs to, if any, `masks` what it found of its masks and `recycling`
+// its kept manifold's pose (all nullptr for `collide_polygons`). All three steps, in one function.
 inline void evaluate(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                      ContactMemory& memory, const TriangleContact* contact = nullptr,
-                     ManifoldRecycling* recycling = nullptr) {
+                     FoundMasks* masks = nullptr, ManifoldRecycling* recycling = nullptr) {
   if (setting.backend) {
     if (memory.shapes == ContactMemory::Shapes::Unchecked) look_at_shapes(pair.a, pair.b, memory);
     if (triangle_shapes(memory)) {
-      if (recycling && kept(*manifold, setting, pair, memory, *recycling, contact)) return;
+      if (recycling && kept(*manifold, setting, pair, memory, *recycling, contact, masks)) return;
       skip_or_answer(manifold, setting, pair, memory, recycling, [&](const b2Transform& b_in_a) {
-        answer_afresh(manifold, setting, pair, b_in_a, memory, contact, recycling);
+        answer_afresh(manifold, setting, pair, b_in_a, memory, contact, masks, recycling);
       });
       return;
     }

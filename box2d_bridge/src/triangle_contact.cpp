@@ -19,7 +19,8 @@ namespace {
 
 // Box2D's block allocator serves sizes in classes (..., 160, 192, 224, 256, 320, ...). Box2D's
 // own polygon contact adds nothing to b2Contact (208 bytes in Box2D 2.4.1): the 224-byte class.
-// Ours adds its `ContactMemory` and `ManifoldRecycling` (24 bytes each): the 256-byte class.
+// Ours adds its `ContactMemory` (16 bytes), `FoundMasks` (8) and `ManifoldRecycling` (24): the
+// 256-byte class.
 constexpr std::size_t allocator_class_below = 224;
 constexpr std::size_t allocator_class = 256;
 
@@ -114,7 +115,8 @@ void fixtures_changed_near(const b2Contact& c) {
 // sizeof(b2PolygonContact), the 224-byte class: ours are never handed to it, since our destroy
 // function, which frees every polygon contact as what it is, stays registered once installed
 // (see `uninstall`).
-static_assert(sizeof(ContactMemory) == 24 && sizeof(ManifoldRecycling) == 24,
+static_assert(sizeof(ContactMemory) == 16 && sizeof(FoundMasks) == 8 &&
+                  sizeof(ManifoldRecycling) == 24,
               "the sizes the contact's budget counts on");
 static_assert(sizeof(TriangleContact) > allocator_class_below &&
                   sizeof(TriangleContact) <= allocator_class,
@@ -152,14 +154,15 @@ TriangleContact* TriangleContact::ours(b2Contact* c) {
 }
 
 bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
-  const std::uint16_t found = memory_.internal_edges_stamp;
-  return found != 0 && found != internal_edges_stamp(epoch) && with_static_body();
+  const std::uint16_t found = masks_.stamp;
+  return found != 0 && !masks_.fixed() && found != internal_edges_stamp(epoch) &&
+         with_static_body();
 }
 
 void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
   // Its static neighbours may have moved, and the pair's other static contacts may not see it in
   // their own stamps.
-  if (seen != 0 && with_static_body()) {
+  if (seen != 0 && seen != FoundMasks::fixed_stamp && with_static_body()) {
     static_neighbourhood_changed(*m_fixtureA->GetBody(), *m_fixtureB->GetBody());
   }
 }
@@ -173,8 +176,8 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
   std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
   if (!(a && b)) for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-    if (&c == this || c.memory_.internal_edges_stamp != stamp || !c.memory_.internal_edges_found ||
-        c.memory_.internal_edges_fixtures != fixtures || !(c.memory_.internal_edges_motion < 0)) {
+    if (&c == this || c.masks_.stamp != stamp || !c.masks_.settled() ||
+        c.masks_.fixtures != fixtures) {
       return true;
     }
     const InternalEdges m = c.memory_.internal_edges;
@@ -234,7 +237,10 @@ PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf
 [[gnu::noinline]] void TriangleContact::keep_or_evaluate(b2Manifold* manifold,
                                                          const b2Transform& xf_a,
                                                          const b2Transform& xf_b) {
-  if (kept(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this)) return;
+  if (kept(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this,
+           &masks_)) {
+    return;
+  }
   evaluate_in_full(manifold, xf_a, xf_b);
 }
 
@@ -254,24 +260,26 @@ PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf
                                                       const b2Transform& xf_b,
                                                       b2Transform b_in_a) {
   detail::answer_afresh(manifold, installation().setting, pair(xf_a, xf_b), b_in_a, memory_, this,
-                        &recycling_);
+                        &masks_, &recycling_);
 }
 
 [[gnu::noinline]] void TriangleContact::evaluate_in_general(b2Manifold* manifold,
                                                             const b2Transform& xf_a,
                                                             const b2Transform& xf_b) {
-  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &recycling_);
+  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &masks_,
+           &recycling_);
 }
 
 void TriangleContact::evaluate_afresh(b2Manifold* manifold) const {
   const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
   const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
   ContactMemory memory = memory_;  // its masks and warm start, not its state
+  FoundMasks masks = masks_;
   Setting setting = installation().setting;
   setting.never_recompute = false;
   evaluate(manifold, setting,
            {a, m_fixtureA->GetBody()->GetTransform(), b, m_fixtureB->GetBody()->GetTransform()},
-           memory, this);
+           memory, this, &masks);
 }
 
 }  // namespace dyop::box2d::detail

@@ -12,6 +12,7 @@
 
 #include "dyop/box2d.hpp"
 #include "edge_data.hpp"
+#include "found_masks.hpp"
 #include "recycling.hpp"
 
 namespace dyop::box2d::detail {
@@ -50,8 +51,8 @@ class TriangleContact final : public b2Contact {
   // The plug-in's contact `c` is, or nullptr (Box2D's own, made before an install).
   static TriangleContact* ours(b2Contact* c);
 
-  // What its internal-edge masks would be found under now (`ContactMemory::internal_edges_stamp`):
-  // install `epoch` and the frames of its static bodies, never 0. Why a static body's frame:
+  // What its internal-edge masks would be found under now (`FoundMasks::stamp`): install `epoch`
+  // and the frames of its static bodies, never 0 nor `FoundMasks::fixed_stamp`. Why a static body's frame:
   // static bodies share edges with each other, so moving one (`SetTransform`) or making it static
   // or not (`SetType`) changes its triangles' masks, and nothing else in the world records a move
   // within the broad phase's margin. Folded with the install so that a change of either gives
@@ -62,15 +63,15 @@ class TriangleContact final : public b2Contact {
     h = fold_static_frame(h, *m_fixtureA->GetBody());
     h = fold_static_frame(h, *m_fixtureB->GetBody());
     const auto stamp = static_cast<std::uint16_t>(h ^ (h >> 16));
-    return stamp != 0 ? stamp : 1;
+    if (stamp == 0) return 1;
+    return stamp != FoundMasks::fixed_stamp ? stamp : FoundMasks::fixed_stamp - 1;
   }
 
-  // The world's count of fixture proxies, its low 16 bits (`ContactMemory::
-  // internal_edges_fixtures`). Why: it is the world's own and moves whenever a fixture of the
+  // The world's count of fixture proxies, its low 16 bits (`FoundMasks::fixtures`). Why: it is the world's own and moves whenever a fixture of the
   // world is created or destroyed (a fixture added next to a triangle, or one taken away from
   // under a body resting elsewhere on its neighbour, changes that neighbour's masks), in O(1). A
   // change far from a pair matters only once the pair has moved toward it: from then on the pair
-  // follows its motion (`ContactMemory::internal_edges_motion`).
+  // follows its motion (`FoundMasks::motion`).
   std::uint16_t world_fixtures() const {
     return static_cast<std::uint16_t>(
         m_fixtureA->GetBody()->GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());
@@ -78,9 +79,9 @@ class TriangleContact final : public b2Contact {
 
   // The pair's internal-edge masks (`ContactMemory::internal_edges`) under `stamp` (install
   // `epoch`) and `fixtures` (`world_fixtures`): each triangle's half taken from another contact
-  // between the same two bodies that has the same fixture and masks found under both (the count
-  // never seen to move since: both contacts were evaluated at the same steps, and saw the same
-  // counts); for a non-static body's triangle, else
+  // between the same two bodies that has the same fixture and masks found under both, settled
+  // (both contacts were evaluated at the same steps, and saw the same counts); for a non-static
+  // body's triangle, else
   // from any contact of its body with that fixture whose masks still hold (`half_from_body`);
   // else found from the fixture's edge group (`triangle_internal_edges`). A box on a ground finds
   // a ground triangle's masks once for all its fixtures touching it, and a body in a pile finds
@@ -88,7 +89,7 @@ class TriangleContact final : public b2Contact {
   InternalEdges find_internal_edges(std::uint16_t stamp, std::uint16_t fixtures,
                                     std::uint8_t epoch) const;
 
-  // Its stamp moved from `seen` (`ContactMemory::internal_edges_stamp`, 0: none) to another. Seen
+  // Its stamp moved from `seen` (`FoundMasks::stamp`, 0: none) to another. Seen
   // before, with a static body in the pair: its static neighbourhood changed, and the pair's
   // other contacts with static bodies find their masks again too (see
   // `static_neighbourhood_changed` in the .cpp).
@@ -108,10 +109,8 @@ class TriangleContact final : public b2Contact {
   // the fixture count it would have now, and the count never seen to move since: it may have
   // come back by other changes), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
-    const std::uint16_t found = memory_.internal_edges_stamp;
-    if (!memory_.internal_edges_found || found == 0 || found != internal_edges_stamp(epoch) ||
-        memory_.internal_edges_fixtures != world_fixtures() ||
-        !(memory_.internal_edges_motion < 0)) {
+    if (!masks_.settled() || masks_.stamp == 0 || masks_.stamp != internal_edges_stamp(epoch) ||
+        masks_.fixtures != world_fixtures()) {
       return std::nullopt;
     }
     return memory_.internal_edges;
@@ -132,7 +131,7 @@ class TriangleContact final : public b2Contact {
   void recompute() { recycling_.slack = 0; }
 
   // Its internal-edge masks are found again when next needed (a fixture near it changed).
-  void forget_internal_edges() { memory_.internal_edges_stamp = 0; }
+  void forget_internal_edges() { masks_.stamp = 0; }
 
   // True when its masks were found under a stamp that no longer holds under `epoch` and a body of
   // the pair is static: the static bodies near it changed (or the world's fixtures).
@@ -162,6 +161,7 @@ class TriangleContact final : public b2Contact {
                            const b2Transform& xf_b);
 
   ContactMemory memory_;
+  FoundMasks masks_;
   ManifoldRecycling recycling_;
 };
 

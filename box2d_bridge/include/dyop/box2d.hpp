@@ -195,10 +195,9 @@ struct Config {
   /// make no edge internal. A contact finds its two triangles' masks when the rule first needs
   /// them (its pair is not skipped), from the fixtures as they are then (the group's triangles
   /// near each one, from the world's broad phase), and keeps them in its `ContactMemory`; it finds
-  /// them again after the frames of its static bodies changed (`ContactMemory::
-  /// internal_edges_stamp`), after fixtures near it changed (a contact made or ended), and after
-  /// fixtures elsewhere in its world changed once it has moved toward them
-  /// (`ContactMemory::internal_edges_motion`), and tells its moving body's other contacts with
+  /// them again after the frames of its static bodies changed, after fixtures near it changed (a
+  /// contact made or ended), and after fixtures elsewhere in its world changed once it has moved
+  /// 0.05 m toward them, and tells its moving body's other contacts with
   /// static bodies to do the same (`forget_internal_edges` in `dyop/box2d_internal_edges.hpp`
   /// for what it cannot see). The other backends ignore it and never look. Off: the world is
   /// bit-identical to Box2D's own handling of each fixture alone, as the plug-in was without the
@@ -221,7 +220,7 @@ struct Config {
   /// pair beyond the skins' reach, so no new contact is missed; a fast body recomputes every step
   /// (it moves farther than the tolerance); another install (backend or config) and a change of
   /// the pair's internal-edge masks recompute; a fixture created or destroyed elsewhere in the
-  /// world does not (`ContactMemory::internal_edges_fixtures`); a skipped evaluation is never kept. The library's
+  /// world does not; a skipped evaluation is never kept. The library's
   /// methods only: `Backend::Box2D` answers afresh every time, bit-identical to Box2D's own
   /// contact. Counted in `Stats::recycled`. `collide_polygons` never keeps a manifold (it has no contact to keep it
   /// in).
@@ -266,7 +265,7 @@ inline constexpr int skip_count = 2;
 /// "bounds", "warm-axis".
 const char* name(Skip s);
 
-/// What the plug-in remembers about one polygon pair between evaluations: 24 bytes, held inside
+/// What the plug-in remembers about one polygon pair between evaluations: 16 bytes, held inside
 /// each of its contacts (no heap: `b2World`'s destructor frees contacts without destroying them).
 /// A caller of `collide_polygons` that replays one pair's evaluations keeps one for it.
 /// Default-constructed: nothing known yet (the first evaluation looks at the shapes).
@@ -295,37 +294,9 @@ struct ContactMemory {
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits,
   /// then B's), used while the installed backend applies the rule (`Config::internal_edges`). A
-  /// world's contact finds them itself (see `internal_edges_stamp`); a caller of
+  /// world's contact reads them from fixed edge data or finds them itself; a caller of
   /// `collide_polygons` sets them.
   InternalEdges internal_edges{};
-  /// A world's contact: what its masks hold under, 0 not yet seen or forgotten: the install (see
-  /// `install`) and the frames of the pair's static bodies, folded into 16 bits. Recorded at the
-  /// first answer under it; the masks are found when the rule first needs them under it (see
-  /// `internal_edges_found`), from the two fixtures' bodies as they are then. Set to 0 after a
-  /// contact between the same two bodies was made or destroyed between steps (a fixture of one of
-  /// them added, destroyed, moved, enabled or changed type).
-  std::uint16_t internal_edges_stamp = 0;
-  /// A world's contact: `internal_edges` were found under `internal_edges_stamp`. False while
-  /// every answer under it was apart beyond the margin, which is the same under any masks (see
-  /// `Apart::Gap`): most contacts a broad phase makes never come closer.
-  bool internal_edges_found = false;
-  /// A world's contact: `internal_edges` were read from its two fixtures' fixed edge data
-  /// (`fix_internal_edges`); a kept manifold then needs no check of them
-  /// (`refresh_internal_edges` makes the contacts of what it refreshes recompute).
-  bool internal_edges_fixed = false;
-  /// A world's contact: the world's count of fixture proxies (its low 16 bits) when
-  /// `internal_edges` were found. A fixture created or destroyed within the broad phase's reach of
-  /// the pair makes or ends a contact with one of its bodies, which the pair sees at once; one
-  /// farther away moves only this count, and cannot matter before the pair has moved toward it
-  /// (see `internal_edges_motion`). So a kept manifold stays (see `Config::recycle_distance`), and
-  /// an answer computed afresh finds the masks again only once the pair has moved too far since.
-  std::uint16_t internal_edges_fixtures = 0;
-  /// A world's contact: how far the pair has moved since the world's fixture count first moved
-  /// from `internal_edges_fixtures` (metres, a bound: the recycling motion summed over the answers
-  /// computed afresh since the last that had not seen it move, each evaluation in between having
-  /// kept its manifold); infinity once one was skipped (where the pair went then is unknown) or
-  /// nothing followed the pose (recycling off); below 0 while the count has not moved.
-  float internal_edges_motion = -1;
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s

@@ -56,7 +56,7 @@ std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture);
 /// broad phase's margin (0.1 m) from them to see it at once. The plug-in sees every other change
 /// itself: fixtures created, destroyed, enabled or disabled anywhere in the world (near a pair at
 /// once, through the contacts made or ended with its bodies; farther away once the pair has moved
-/// 0.05 m since, before it could reach them: see `ContactMemory::internal_edges_motion`), a static
+/// 0.05 m since, before it could reach them), a static
 /// body moved or made static or not near a body (through that body's contact with it), and
 /// contacts made or ended between steps (see `Config::internal_edges`). Call between steps.
 void forget_internal_edges(b2World& world);
