@@ -8,8 +8,7 @@
 // instructions, and Box2D's own contact answers a pair apart after one face test, so every call,
 // every register saved and every transformed vertex counts. The skip tests rotate one normal into
 // the other body's frame instead of moving three vertices. The method's run is out of line
-// (evaluation.cpp), and the world's contact runs the steps as paths of their own (see
-// `skip_or_answer` and `TriangleContact::Evaluate`).
+// (evaluation.cpp), and so are a world's contact's keep and answer (`TriangleContact::Evaluate`).
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
@@ -20,20 +19,12 @@
 #include "dyop/box2d.hpp"
 #include "found_masks.hpp"
 #include "installation.hpp"
+#include "polygon_pair.hpp"
 #include "recycling.hpp"
 #include "stats.hpp"
 #include "triangle_contact.hpp"
 
 namespace dyop::box2d::detail {
-
-// A polygon pair as Box2D hands it over: the shapes in their body frames and the bodies'
-// transforms.
-struct PolygonPair {
-  const b2PolygonShape& a;
-  const b2Transform& xf_a;
-  const b2PolygonShape& b;
-  const b2Transform& xf_b;
-};
 
 // The first evaluation: what the two shapes are (triangles, not yet validated, or larger
 // polygons) and their bounding radii, kept in `memory` (the shapes of a fixture never change).
@@ -131,15 +122,13 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
                                                face_reach(margin)));
 }
 
-// An evaluation of a triangle pair under an install runs three steps, each counted: a kept
-// manifold (a world's contact only), a skip, the answer afresh. `evaluate` runs them in one
-// function; a world's contact runs them as paths of their own (see `TriangleContact::Evaluate`),
-// each reached by a jump, so that the common outcomes (a kept manifold in a resting scene, a
-// skip in a rain) pay no register saves for the rare ones.
+// An evaluation of a triangle pair under an install is one of three acts, each counted: keep the
+// last manifold (a world's contact only), skip, or answer. `evaluate` runs them in one function;
+// a world's contact in `TriangleContact::Evaluate`, keep and answer out of line.
 
-// Step 1: true when the world's contact keeps the manifold in `manifold` (see `keeps_manifold`).
-// Otherwise its pose stays until the answer afresh replaces it, or a skip loses it.
-[[gnu::always_inline]] inline bool kept(const b2Manifold& manifold, const Setting& setting,
+// Keep: true when the world's contact keeps the manifold in `manifold` (see `keeps_manifold`),
+// counted. Otherwise its pose stays until an answer replaces it, or a skip loses it.
+[[gnu::always_inline]] inline bool keep(const b2Manifold& manifold, const Setting& setting,
                                         const PolygonPair& p, ContactMemory& memory,
                                         const ManifoldRecycling& recycling,
                                         const TriangleContact* contact, FoundMasks* masks) {
@@ -156,9 +145,8 @@ inline float recycle_slack(const Setting& setting, const b2Manifold& manifold, c
   return false;
 }
 
-// Step 2's test, for a pair of triangles (`triangle_shapes`) once nothing was kept:
-// the skip that proves the manifold empty (`Config::bounds_early_out`, `Config::warm_axis`), if
-// any. `b_in_a`: B's body frame given in A's.
+// The skip that proves the manifold of a pair of triangles (`triangle_shapes`) empty
+// (`Config::bounds_early_out`, `Config::warm_axis`), if any. `b_in_a`: B's body frame given in A's.
 inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
                                    const b2Transform& b_in_a, const ContactMemory& memory) {
   const float margin = p.a.m_radius + p.b.m_radius;
@@ -172,16 +160,36 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
   return std::nullopt;
 }
 
-// Step 3, once nothing was kept or skipped: the method's answer, remembered for keeping
-// (`recycling`: the world's contact's, nullptr for `collide_polygons`); Box2D's code for
-// `Backend::Box2D` (its answer, not a fallback), for invalid triangles and for a method that
-// could not answer (a counted fallback, so that the world goes on).
-[[gnu::always_inline]] inline void answer_afresh(b2Manifold* manifold, const Setting& setting,
-                                                 const PolygonPair& p, const b2Transform& b_in_a,
-                                                 ContactMemory& memory,
-                                                 const TriangleContact* contact,
-                                                 FoundMasks* masks,
-                                                 ManifoldRecycling* recycling) {
+// Skip: true when a pair of triangles under an install, nothing kept, is skipped (`skip_of`): its
+// manifold emptied, its pose lost (`recycling`, nullptr for `collide_polygons`), counted last (the
+// thread's first count makes its counters: a call, with nothing else left to keep across it).
+[[gnu::always_inline]] inline bool skip(b2Manifold* manifold, const Setting& setting,
+                                        const PolygonPair& p, const b2Transform& b_in_a,
+                                        const ContactMemory& memory,
+                                        ManifoldRecycling* recycling) {
+  const std::optional<Skip> reason = skip_of(setting, p, b_in_a, memory);
+  if (!reason) return false;
+  manifold->pointCount = 0;
+  if (recycling) {
+    if (setting.never_recompute && setting.method) {
+      recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
+    } else {
+      recycling->lose_pose();
+    }
+  }
+  ThreadCounters& count = counters();
+  count.skipped[static_cast<int>(*setting.backend)][static_cast<int>(*reason)].add();
+  return true;
+}
+
+// Answer, once nothing was kept or skipped: the method's answer (`run_method`), its pose
+// remembered for keeping (`recycling`: the world's contact's, nullptr for `collide_polygons`);
+// Box2D's code for `Backend::Box2D` (its answer, not a fallback), for invalid triangles and for a
+// method that could not answer (a counted fallback, so that the world goes on).
+[[gnu::always_inline]] inline void answer(b2Manifold* manifold, const Setting& setting,
+                                          const PolygonPair& p, const b2Transform& b_in_a,
+                                          ContactMemory& memory, const TriangleContact* contact,
+                                          FoundMasks* masks, ManifoldRecycling* recycling) {
   ThreadCounters& count = counters();
   count.triangle_pairs[static_cast<int>(*setting.backend)].add();
   if (setting.method) {
@@ -207,31 +215,6 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
   if (manifold->pointCount > 0) count.manifolds.add();
 }
 
-// Steps 2 and 3 for a pair of triangles (`triangle_shapes`) under an install, once
-// nothing was kept: `afresh(b_in_a)` runs step 3 (`answer_afresh`, inline or as the contact's
-// own out-of-line path). A skip is counted last: the thread's first count makes its counters (a
-// call), and nothing else is then left to keep across it.
-template <class Afresh>
-[[gnu::always_inline]] inline void skip_or_answer(b2Manifold* manifold, const Setting& setting,
-                                                  const PolygonPair& p,
-                                                  const ContactMemory& memory,
-                                                  ManifoldRecycling* recycling,
-                                                  const Afresh& afresh) {
-  const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
-  const std::optional<Skip> skip = skip_of(setting, p, b_in_a, memory);
-  if (!skip) return afresh(b_in_a);
-  manifold->pointCount = 0;
-  if (recycling) {
-    if (setting.never_recompute && setting.method) {
-      recycling->remember(b_in_a, p.b.m_centroid, 1, setting.epoch);
-    } else {
-      recycling->lose_pose();
-    }
-  }
-  ThreadCounters& count = counters();
-  count.skipped[static_cast<int>(*setting.backend)][static_cast<int>(*skip)].add();
-}
-
 // True for a pair whose shapes were looked at and found to be triangles (valid, invalid or not
 // validated yet).
 inline bool triangle_shapes(const ContactMemory& memory) {
@@ -246,17 +229,17 @@ inline bool triangle_shapes(const ContactMemory& memory) {
 // The plug-in's answer for one polygon pair with `setting` (uninstalled: Box2D's own answer,
 // uncounted, exactly as Box2D's own contact); `memory` is the pair's state, updated; `contact`
 // the world's contact it belongs to, if any, `masks` what it found of its masks and `recycling`
-// its kept manifold's pose (all nullptr for `collide_polygons`). All three steps, in one function.
+// its kept manifold's pose (all nullptr for `collide_polygons`): keep, skip or answer.
 inline void evaluate(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                      ContactMemory& memory, const TriangleContact* contact = nullptr,
                      FoundMasks* masks = nullptr, ManifoldRecycling* recycling = nullptr) {
   if (setting.backend) {
     if (memory.shapes == ContactMemory::Shapes::Unchecked) look_at_shapes(pair.a, pair.b, memory);
     if (triangle_shapes(memory)) {
-      if (recycling && kept(*manifold, setting, pair, memory, *recycling, contact, masks)) return;
-      skip_or_answer(manifold, setting, pair, memory, recycling, [&](const b2Transform& b_in_a) {
-        answer_afresh(manifold, setting, pair, b_in_a, memory, contact, masks, recycling);
-      });
+      if (recycling && keep(*manifold, setting, pair, memory, *recycling, contact, masks)) return;
+      const b2Transform b_in_a = b2MulT(pair.xf_a, pair.xf_b);
+      if (skip(manifold, setting, pair, b_in_a, memory, recycling)) return;
+      answer(manifold, setting, pair, b_in_a, memory, contact, masks, recycling);
       return;
     }
     counters().polygon_pairs.add();

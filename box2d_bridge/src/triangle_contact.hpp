@@ -13,11 +13,10 @@
 #include "dyop/box2d.hpp"
 #include "edge_data.hpp"
 #include "found_masks.hpp"
+#include "polygon_pair.hpp"
 #include "recycling.hpp"
 
 namespace dyop::box2d::detail {
-
-struct PolygonPair;  // evaluation.hpp
 
 // `h` with `body`'s frame folded in when it is static (its type too: a body made static or not
 // folds differently); a moving body's frame is not part of any mask. The frame as two 64-bit
@@ -97,7 +96,7 @@ class TriangleContact final : public b2Contact {
 
   // The manifold it would compute now with nothing kept (`measurement::evaluate_afresh`), its
   // state unchanged.
-  void evaluate_afresh(b2Manifold* manifold) const;
+  void fresh_manifold(b2Manifold* manifold) const;
 
   // True when a body of its pair is static.
   bool with_static_body() const {
@@ -150,15 +149,14 @@ class TriangleContact final : public b2Contact {
   // Its two shapes with the bodies' transforms.
   PolygonPair pair(const b2Transform& xf_a, const b2Transform& xf_b) const;
 
-  // `Evaluate`'s paths (see there): a kept manifold, else the rest; the rest, nothing kept (a
-  // skip, else the answer afresh); the answer afresh (`b_in_a`: B's body frame given in A's);
-  // the whole of `evaluate` (uninstalled, shapes not yet looked at, or larger polygons).
-  void keep_or_evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
-  void evaluate_in_full(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
-  void answer_afresh(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b,
-                     b2Transform b_in_a);
-  void evaluate_in_general(b2Manifold* manifold, const b2Transform& xf_a,
-                           const b2Transform& xf_b);
+  // `Evaluate`'s paths out of line (see there): keep, else go on to skip or answer; skip or
+  // answer, once nothing was kept; answer afresh (`b_in_a`: B's body frame given in A's); the
+  // cold path (uninstalled, shapes not yet looked at, larger polygons).
+  void keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
+  void skip_or_answer(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
+  void answer(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b,
+              const b2Transform& b_in_a);
+  void evaluate_cold(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
 
   ContactMemory memory_;
   FoundMasks masks_;
