@@ -155,11 +155,17 @@ const experiments::ContactStream& stream_of(const std::string& scene) {
 }
 
 // `backend` nullopt: `b2CollidePolygons` directly (box2d-own). Memories start over, untimed, at
-// each wrap, so every pass over the stream starts as the world did.
+// each wrap, so every pass over the stream starts as the world did; `masks`: each contact's
+// internal-edge masks given, as a world's contact holds them (else none: the same pairs plain).
 void bm_stream(benchmark::State& state, const std::string& scene,
-               std::optional<box2d::Backend> backend) {
+               std::optional<box2d::Backend> backend, bool masks) {
   const experiments::ContactStream& s = stream_of(scene);
-  std::vector<box2d::ContactMemory> memory(s.contacts.size());
+  const auto fresh = [&] {
+    std::vector<box2d::ContactMemory> m(s.contacts.size());
+    for (std::size_t k = 0; masks && k < m.size(); ++k) m[k].internal_edges = s.contacts[k].internal_edges;
+    return m;
+  };
+  std::vector<box2d::ContactMemory> memory = fresh();
   b2Manifold manifold;
   std::size_t i = 0;
   for (auto _ : state) {
@@ -175,7 +181,7 @@ void bm_stream(benchmark::State& state, const std::string& scene,
     if (++i == s.calls.size()) {
       state.PauseTiming();
       i = 0;
-      memory.assign(memory.size(), box2d::ContactMemory{});
+      memory = fresh();
       state.ResumeTiming();
     }
   }
@@ -187,10 +193,21 @@ void register_streams() {
     const std::string head = std::string("BM_stream/") + scene + "/";
     for (box2d::Backend b : box2d::all_backends) {
       benchmark::RegisterBenchmark((head + box2d::name(b)).c_str(), bm_stream, scene,
-                                   std::optional<box2d::Backend>(b));
+                                   std::optional<box2d::Backend>(b), false);
     }
     benchmark::RegisterBenchmark((head + scenes::box2d_own).c_str(), bm_stream, scene,
-                                 std::optional<box2d::Backend>());
+                                 std::optional<box2d::Backend>(), false);
+  }
+  // The internal-edge rule's price per pair: the same calls with their masks and without.
+  for (const char* scene : {"tiles", "slide", "tile-map"}) {
+    const std::string head = std::string("BM_stream/") + scene + "/";
+    for (const bool masks : {false, true}) {
+      benchmark::RegisterBenchmark((head + (masks ? "dyop-masks" : "dyop")).c_str(), bm_stream,
+                                   scene, std::optional<box2d::Backend>(box2d::Backend::Dyop),
+                                   masks);
+    }
+    benchmark::RegisterBenchmark((head + scenes::box2d_own).c_str(), bm_stream, scene,
+                                 std::optional<box2d::Backend>(), false);
   }
 }
 #endif

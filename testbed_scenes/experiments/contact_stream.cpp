@@ -1,5 +1,7 @@
 #include "experiments/contact_stream.hpp"
 
+#include "dyop/box2d_internal_edges.hpp"
+
 #include <box2d/box2d.h>
 
 #include <algorithm>
@@ -163,7 +165,14 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
         continue;
       }
       auto [it, created] = live.try_emplace(c, static_cast<std::int32_t>(stream.contacts.size()));
-      if (created) stream.contacts.push_back({*a, *b, a->m_count == 3 && b->m_count == 3});
+      if (created) {
+        const bool triangles = a->m_count == 3 && b->m_count == 3;
+        stream.contacts.push_back(
+            {*a, *b, triangles,
+             triangles ? InternalEdges::pair(box2d::triangle_internal_edges(*c->GetFixtureA()),
+                                             box2d::triangle_internal_edges(*c->GetFixtureB()))
+                       : InternalEdges{}});
+      }
       if (action == scenes::CollideAction::Skip) continue;
       stream.calls.push_back({it->second, step, c->GetFixtureA()->GetBody()->GetTransform(),
                               c->GetFixtureB()->GetBody()->GetTransform()});

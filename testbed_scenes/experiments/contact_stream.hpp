@@ -46,6 +46,9 @@ struct StreamContact {
   b2PolygonShape shape_b;  ///< fixture B's polygon
   /// True when both are triangles (`m_count == 3`): the pairs the plug-in's backend answers.
   bool triangles = false;
+  /// The pair's internal-edge masks in the world (`triangle_internal_edges` of each fixture,
+  /// A's bits then B's) when it was made; none for polygons of more vertices.
+  InternalEdges internal_edges{};
 };
 
 /// One contact update: an `Evaluate` of a step.
