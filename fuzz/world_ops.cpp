@@ -609,6 +609,10 @@ void Player::world_op(int w, const WorldOp& op) {
 PlayResult play_world_ops(const std::vector<WorldOp>& ops, Installs installs, std::FILE* log) {
   Player player(installs, log);
   for (const WorldOp& op : ops) player.run(op);
+  WorldOp last;  // every world one more step, so that whatever the operations built is simulated
+  last.kind = OpKind::Step;
+  last.arg = {kWorlds, 0, 8, 3};
+  player.run(last);
   return player.result();
 }
 

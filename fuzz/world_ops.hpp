@@ -78,8 +78,9 @@ struct PlayResult {
   int steps = 0;
 };
 
-// Plays `ops` on fresh worlds, starting and ending with Box2D's own contact registered; `log`, when
-// given, gets one line per operation.
+// Plays `ops` on fresh worlds, then steps every world once (1/60 s, 8/3 iterations, within
+// `max_steps`), starting and ending with Box2D's own contact registered; `log`, when given, gets
+// one line per operation.
 PlayResult play_world_ops(const std::vector<WorldOp>& ops, Installs installs,
                           std::FILE* log = nullptr);
 
