@@ -82,6 +82,16 @@ float s8(std::uint8_t b) { return static_cast<float>(static_cast<std::int8_t>(b)
 float lo(std::uint8_t b) { return static_cast<float>(b & 15) - 8.0f; }
 float hi(std::uint8_t b) { return static_cast<float>(b >> 4) - 8.0f; }
 
+const char* kind_name(OpKind k) {
+  constexpr const char* names[static_cast<int>(OpKind::Count)] = {
+      "new world",   "end world",      "create body",   "destroy body",   "add triangle",
+      "add mesh",    "add polygon",    "add circle",    "destroy fixture", "teleport",
+      "set type",    "set enabled",    "set velocity",  "apply impulse",  "install",
+      "uninstall",   "fix edges",      "refresh edges", "forget edges",   "step",
+      "world flags"};
+  return names[static_cast<int>(k)];
+}
+
 b2BodyType body_type(int k) {
   constexpr b2BodyType types[4] = {b2_staticBody, b2_kinematicBody, b2_dynamicBody,
                                    b2_dynamicBody};
@@ -278,7 +288,7 @@ void Player::run(const WorldOp& op) {
       if (b2Body* body = body_of(op.arg[0])) {
         body_op(*body, op);
       } else {
-        note("op %d on world %d", static_cast<int>(op.kind), op.arg[0] % kWorlds);
+        note("%s on world %d", kind_name(op.kind), op.arg[0] % kWorlds);
         skip("no such world or body");
       }
   }
