@@ -36,18 +36,19 @@ def pile():
     s += op("CreateBody", 0, STATIC, 0, -8, 0, 0)
     s += op("AddMesh", at(0, 0), 3, 0x13, xy(-2, 0), 1, 0)  # 4 x 2 cells of 1 m, sloped top
     for k in range(4):
-        s += op("CreateBody", 0, DYNAMIC, 4 * k - 6, 12 + 6 * k, 0, 8 * k)
+        s += op("CreateBody", 0, DYNAMIC, 4 * k - 6, 2 + 3 * k, 0, 8 * k)  # just above
         s += op("AddTriangle", at(0, k + 1), 2 | (k << 5), xy(0, 0), xy(2, 0), xy(1, 2), xy(0, 0))
         s += op("AddTriangle", at(0, k + 1), 2, xy(0, 0), xy(1, 2), xy(-1, 2), xy(0, 0))
-    return s + step(repeats=4) * 5
+    return s + step(repeats=4) * 10
 
 
 def t_junction_slide():
     s = op("Install", SAT, 0, 1)
     s += op("CreateBody", 0, STATIC, 0, 0, 0, 0)
     s += op("AddMesh", at(0, 0), 3 | 8, 0x03, xy(-2, -1), 0, 4)  # 4 cells, T-junction
-    s += op("CreateBody", 0, DYNAMIC, -6, 5, 0, 0)
-    s += op("AddPolygon", at(0, 1), 2, 0, 0, xy(0, 0), 0)  # a 0.25 m square
+    s += op("CreateBody", 0, DYNAMIC, -6, 1, 0, 0)  # resting on the mesh
+    s += op("AddTriangle", at(0, 1), 1, xy(-4, -4), xy(4, -4), xy(4, 4), xy(0, 0))  # a 0.4 m box
+    s += op("AddTriangle", at(0, 1), 1, xy(-4, -4), xy(4, 4), xy(-4, 4), xy(0, 0))
     s += op("SetVelocity", at(0, 1), 1, 48, -4, 0)
     s += op("FixEdges", 0, 1) + step(repeats=4) * 3
     s += op("Install", DYOP, 8, 0) + step(repeats=4) * 3  # internal edges off
@@ -57,8 +58,8 @@ def t_junction_slide():
 def switch_backends():
     s = op("NewWorld", 1, 0)
     s += op("CreateBody", 1, STATIC, 0, 0, 0, 0)
-    s += op("AddTriangle", at(1, 0), 3, xy(-4, -1), xy(4, -1), xy(0, 0), xy(0, 0))
-    s += op("CreateBody", 1, DYNAMIC, 0, 4, 0, 3)
+    s += op("AddTriangle", at(1, 0), 3, xy(-4, -1), xy(4, -1), xy(4, 0), xy(0, 0))  # a slope
+    s += op("CreateBody", 1, DYNAMIC, 0, -1, 0, 3)  # just above the slope
     s += op("AddTriangle", at(1, 1), 2, xy(-1, 0), xy(1, 0), xy(0, 1), xy(0, 0))
     s += op("AddCircle", at(1, 1), 1, xy(0, 2), 0)
     for backend in range(6):
@@ -73,13 +74,13 @@ def three_worlds():
         s += op("NewWorld", w, w) if w else b""
         s += op("CreateBody", w, STATIC, 0, 0, 0, 0)
         s += op("AddMesh", at(w, 0), 2, 0x11, xy(0, 0), w, 0)
-        s += op("CreateBody", w, DYNAMIC, 1, 8, 0, 0)
+        s += op("CreateBody", w, DYNAMIC, 1, 3, 0, 0)
         s += op("AddTriangle", at(w, 1), 2, xy(0, 0), xy(1, 0), xy(0, 1), xy(0, 0))
-    s += op("Install", EPA, 0, 0) + step(3, repeats=3)
+    s += op("Install", EPA, 0, 0) + step(3, repeats=4) * 2
     s += op("EndWorld", 1, 1)  # delete without destroying bodies
     s += op("NewWorld", 1, 0) + op("CreateBody", 1, DYNAMIC, 0, 0, 0, 0)
     s += op("AddTriangle", at(1, 0), 3, xy(0, 0), xy(1, 0), xy(0, 1), xy(0, 0))
-    s += op("EndWorld", 0, 0) + step(3, repeats=3)
+    s += op("EndWorld", 0, 0) + step(3, repeats=4) * 2
     return s
 
 
@@ -108,7 +109,8 @@ def move_and_change():
     s += op("CreateBody", 0, STATIC, 12, 0, 0, 0)  # a second ground sharing an edge
     s += op("AddMesh", at(0, 1), 3, 0x00, xy(-1, 0), 0, 0)
     s += op("CreateBody", 0, DYNAMIC, 0, 8, 0, 0)
-    s += op("AddPolygon", at(0, 2), 3, 0, 4, xy(0, 0), 0)
+    s += op("AddTriangle", at(0, 2), 3, xy(-1, -1), xy(1, -1), xy(1, 0), xy(0, 0))
+    s += op("AddPolygon", at(0, 2), 2, 0, 4, xy(0, 2), 0)
     s += op("FixEdges", 0, 1) + step(repeats=3)
     s += op("Teleport", at(0, 1), 14, 0, 0, 0) + op("RefreshEdges", 0, 12, 0, 0, 3)
     s += step(repeats=2) + op("ForgetEdges", 0)
