@@ -11,7 +11,8 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
           libcli11-dev libgmp-dev nlohmann-json3-dev zlib1g-dev gnuplot-nox
-          clang libclang-rt-14-dev)  # the last two for scripts/fuzz.sh (libFuzzer)
+          clang libclang-rt-14-dev   # for scripts/fuzz.sh (libFuzzer)
+          doxygen)                   # for scripts/api_docs.sh (the API reference)
 # More for one caller only, e.g. DYOP_EXTRA_PACKAGES=chromium (scripts/browser_test.sh): the
 # main command does not wait for them.
 read -r -a extra <<< "${DYOP_EXTRA_PACKAGES:-}"
@@ -26,6 +27,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get update -qq >&2
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
+
+# DYOP_PACKAGES_ONLY=1: the packages only, no build (scripts/api_docs.sh run on its own).
+if [ "${DYOP_PACKAGES_ONLY:-0}" = 1 ]; then exit 0; fi
 
 mkdir -p build
 log=build/build.log

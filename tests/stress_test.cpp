@@ -64,7 +64,7 @@ TEST_P(StressPromises, SatDyopAndBatchAreExactInEveryCategory) {
 
 TEST_P(StressPromises, NoMethodGivesNaNOrInfOnValidInput) {
   for (const StressRecord& r : records(GetParam())) {
-    // Box2D's own code is measured, not promised: see the README's stress section.
+    // Box2D's own code is measured, not promised: see docs/measurements.md, "Stress: hostile input".
     if (r.method == adapters::NarrowPhase::box2d()) continue;
     EXPECT_EQ(r.nonfinite, 0) << what(r);
   }

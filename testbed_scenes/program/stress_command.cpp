@@ -66,7 +66,7 @@ void add_stress_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--json", args->json, "Write the records as JSON to FILE, or '-' for stdout");
   cmd->add_option("--markdown", args->markdown,
-                  "Write the README's summary tables to FILE, or '-' for stdout");
+                  "Write the summary tables (docs/measurements.md) to FILE, or '-' for stdout");
   cmd->add_option("--pairs", args->pairs, "Pairs per category and precision")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// `dyop stress`'s report: the records of `experiments/stress.hpp` as the aligned table, JSON and
-/// the README's Markdown tables.
+/// the Markdown tables of docs/measurements.md.
 
 #include <iosfwd>
 #include <vector>
@@ -17,7 +17,7 @@ namespace dyop::report {
 /// the JSON only).
 Records stress_records(const std::vector<experiments::StressRecord>& records);
 
-/// The README's stress section tables (Markdown): max error per runner and category, and the
+/// The stress tables of docs/measurements.md (Markdown): max error per runner and category, and the
 /// counts per runner and precision.
 void write_markdown(const std::vector<experiments::StressRecord>& records, std::ostream& out);
 

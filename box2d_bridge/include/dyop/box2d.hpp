@@ -25,21 +25,10 @@
 /// - Geometry is computed in A's body frame (B's vertices moved by `b2MulT(xfA, xfB)`), so float
 ///   accuracy is relative to the shapes' size, not to their distance from the world origin.
 ///
-/// Threads and lifetimes. Box2D 2.4 steps separate worlds on separate threads (one thread per
-/// world at a time; a world may move between threads between steps, as in a pool of
-/// environments), and so does the plug-in:
-/// - Everything the plug-in knows about a world lives in that world's contacts, and is found from
-///   the world's own fixtures and broad phase: no table outside them, so a world's answers depend
-///   on nothing but that world — not on worlds stepped on other threads, nor on worlds deleted
-///   before it (`delete world;` without destroying its bodies is fine, whatever addresses its
-///   allocator hands to the next world). Nothing is kept for a dead world.
-/// - `install` and `uninstall` change Box2D's contact registry, which is process-wide and
-///   unguarded in Box2D itself: call them when no thread is stepping a world, creating or
-///   destroying bodies or fixtures (Box2D reads the registry there). Every other function may run
-///   on any thread at any time.
-/// - `stats()` sums the counts of every thread (each thread counts into its own block, so the
-///   counting never serialises threads); `reset_stats()` and `install` clear them all, and are
-///   exact only while no thread is stepping.
+/// Threads and lifetimes: separate worlds may step on separate threads; everything the plug-in
+/// knows about a world lives in that world's contacts. `install` and `uninstall` change Box2D's
+/// process-wide registry: call them while no thread steps a world or creates or destroys
+/// fixtures; every other function may run on any thread at any time (docs/box2d-plugin.md).
 
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
@@ -148,89 +137,37 @@ struct InstallResult {
   bool ok() const { return status == InstallStatus::Done; }  ///< true when `status == Done`
 };
 
-/// `Config::recycle_distance` by default (metres): 1 mm, a fifth of Box2D 2.4's `b2_linearSlop`.
-/// At it the depth error in falling piles is no larger than Box2D's own contact's
-/// (the trade, measured: docs/design.md, "A kept manifold is sound").
+/// `Config::recycle_distance` by default (metres): 1 mm, a fifth of Box2D 2.4's `b2_linearSlop`,
+/// where the depth error in falling piles is Box2D's own contact's (docs/measurements.md).
 inline constexpr float default_recycle_distance = 0.001f;
 
-/// What a world's narrow phase may skip: each switch avoids work whose result nobody uses, and
-/// never changes the arithmetic of the work it keeps. With an exact backend (`Dyop`, `Sat`, and
-/// `Epa`, `Box2D` likewise) every skip leaves the simulation bit-identical; with `LinCanny`, a
-/// skipped step leaves the warm-start cache where it was, and with `DyopFast`, whose manifold can
-/// lie about far pairs, an early-out can change the answer. All on by default.
-///
-/// Not switches, because they always pay: each contact validates its two triangles once, when it
-/// first evaluates, and then places the shapes' own vertices and normals (`b2PolygonShape` holds
-/// them) without validating again; pairs apart beyond the skins get no Euclidean distance
-/// (`Apart::Gap`). Sensors need nothing here: Box2D 2.4 never asks a sensor's contact for a
-/// manifold (`b2Contact::Update` calls `b2TestOverlap` and skips `Evaluate`).
+/// What `install` sets up for triangle pairs: the skips (work whose result nobody uses; with an
+/// exact backend the world is bit-identical with them on or off), the internal-edge rule and
+/// manifold recycling. Each field's rationale: docs/box2d-plugin.md, "`Config`, field by field".
 struct Config {
-  /// A pair whose bounding circles are farther apart than a manifold can reach (`reach`) gets
-  /// the empty manifold before any axis work. Box2D's broad phase lets through pairs whose fat
-  /// AABBs (grown by 0.1 m) overlap, many of them apart.
+  /// Skip: a pair whose bounding circles are farther apart than `reach` gets the empty manifold
+  /// before any axis work. On by default.
   bool bounds_early_out = true;
-  /// The face the pair was judged on last step is tried first: when it still separates the pair
-  /// by more than the skins and `face_hysteresis`, the manifold is empty and no other work is done
-  /// (DyOP's pivot choice, warm-started).
+  /// Skip: when the face the pair was judged on last step still separates it beyond the skins and
+  /// `face_hysteresis`, the manifold is empty. On by default.
   bool warm_axis = true;
   /// `LinCanny` starts from the features the pair ended on last step; off: every step cold.
+  /// On by default.
   bool lin_canny_cache = true;
 
-
-  /// Not a skip: it changes the answer (on by default). A triangle fixture's edge group is the
-  /// triangle fixtures of its body and, for a static body, of every static body (dynamic and
-  /// kinematic bodies keep their edges to themselves). An edge is internal when the group's edges
-  /// collinear with it and running the other way cover it wholly: a neighbour's same edge, or a
-  /// refined neighbour's edges meeting it at T-junctions (an edge covered in part stays an outline
-  /// edge). Points of two frames are one point within 16·FLT_EPSILON of the coordinates'
-  /// magnitude (2 µm per metre from the origin: the rounding of placing each body's frame);
-  /// within one frame the same rule holds, bit-for-bit shared vertices being the usual case. The
-  /// outline's flat and reflex vertices next to internal edges (a vertex inside another
-  /// triangle's edge takes that edge as the outline through it, straight), and vertices whose two
-  /// edges are both internal, are closed: no other triangle may push there
-  /// (`triangle_internal_edges` in `dyop/box2d_internal_edges.hpp` gives a fixture's masks). The
-  /// exact backends (`Dyop`, `Sat`) never push along them (`Query::internal_edges`), so bodies
-  /// slide over triangulated grounds, tile maps and chunked terrain without ghost collisions.
-  /// Polygons of more than three vertices, circles, edges and chains keep Box2D's own handling and
-  /// make no edge internal. A contact finds its two triangles' masks when the rule first needs
-  /// them (its pair is not skipped), from the fixtures as they are then (the group's triangles
-  /// near each one, from the world's broad phase), and keeps them in its `ContactMemory`; it finds
-  /// them again after the frames of its static bodies changed, after fixtures near it changed (a
-  /// contact made or ended), and after fixtures elsewhere in its world changed once it has moved
-  /// 0.05 m toward them, and tells its moving body's other contacts with
-  /// static bodies to do the same (`forget_internal_edges` in `dyop/box2d_internal_edges.hpp`
-  /// for what it cannot see). The other backends ignore it and never look. Off: the world is
-  /// bit-identical to Box2D's own handling of each fixture alone, as the plug-in was without the
-  /// rule.
+  /// The internal-edge rule: exact backends (`Dyop`, `Sat`) never push along edges shared inside a
+  /// triangulated body or static ground, so bodies slide without ghost collisions. Changes the
+  /// answer; on by default; off: Box2D's fixture-by-fixture handling (docs/box2d-plugin.md).
   bool internal_edges = true;
 
-  /// Not a skip either: it may change the answer, within a bound (on by default:
-  /// `default_recycle_distance`). Metres; 0: off, and the world is bit-identical to the plug-in
-  /// without it. A world's contact keeps the manifold it computed
-  /// (Box2D hands it back at every update) while the relative pose of its two triangles has moved
-  /// less than this (a fifth of it for a pair with a static body: a body sinking deeper into
-  /// static ground meets Box2D's time-of-impact pass) since it was computed: B's centroid against
-  /// A plus the relative turn times a lever of the pair's extent
-  /// (`|Δc| + |sin Δθ|·1.01·(3·radius_sum + reach)`), and never across a turn of more than about
-  /// 11.5° (cosine 0.98). Sound in Box2D 2.4: manifolds are in body
-  /// frames and the solver recomputes every separation from the current transforms, and the
-  /// impulses carry over by `id.key`; what a kept manifold misses is a change of features (a
-  /// vertex coming within the skins, a point sliding off a face), by at most about this distance.
-  /// An empty manifold is kept only while the pose moved less than its judged face separates the
-  /// pair beyond the skins' reach, so no new contact is missed; a fast body recomputes every step
-  /// (it moves farther than the tolerance); another install (backend or config) and a change of
-  /// the pair's internal-edge masks recompute; a fixture created or destroyed elsewhere in the
-  /// world does not; a skipped evaluation is never kept. The library's
-  /// methods only: `Backend::Box2D` answers afresh every time, bit-identical to Box2D's own
-  /// contact. Counted in `Stats::recycled`. `collide_polygons` never keeps a manifold (it has no contact to keep it
-  /// in).
+  /// Manifold recycling (metres): a contact keeps its manifold while its pair's relative pose moved
+  /// less than this (a fifth of it with a static body). Default `default_recycle_distance` (1 mm);
+  /// 0: off, bit-identical to the plug-in without it (docs/box2d-plugin.md).
   float recycle_distance = default_recycle_distance;
 
   /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }
-  /// Every skip off: the work of every evaluation done in full (internal edges and recycling, which
-  /// change the answer, as by default: with an exact backend the world is the same as with every
-  /// skip on).
+  /// Every skip off; the internal-edge rule and recycling as by default.
   static Config none() {
     Config c;
     c.bounds_early_out = false;
@@ -265,20 +202,18 @@ inline constexpr int skip_count = 2;
 /// "bounds", "warm-axis".
 const char* name(Skip s);
 
-/// What the plug-in remembers about one polygon pair between evaluations: 16 bytes, held inside
-/// each of its contacts (no heap: `b2World`'s destructor frees contacts without destroying them).
-/// A caller of `collide_polygons` that replays one pair's evaluations keeps one for it.
-/// Default-constructed: nothing known yet (the first evaluation looks at the shapes).
+/// What the plug-in remembers about one polygon pair between evaluations (16 bytes, inside each of
+/// its contacts, no heap). A caller of `collide_polygons` keeps one per pair; default: nothing
+/// known yet.
 struct ContactMemory {
-  /// What the two shapes were found to be on the first evaluation (two triangles are validated
-  /// on the first evaluation that runs the backend).
+  /// What the two shapes were found to be (triangles are validated by the first evaluation that
+  /// runs the backend).
   enum class Shapes : std::uint8_t {
     Unchecked,         ///< not evaluated yet
     Triangles,         ///< two triangles accepted by `Triangle<float>::make`: the backend answers
     InvalidTriangles,  ///< two triangles, one rejected by `Triangle<float>::make`: Box2D answers
-    /// Two triangles not validated yet: the skips answer them (they need only the shapes'
-    /// centroids, radii and normals); the first evaluation that runs the backend validates them
-    /// (then `Triangles` or `InvalidTriangles`). Most contacts of a rain never get that far.
+    /// Two triangles not validated yet: only skips have answered them so far (then `Triangles` or
+    /// `InvalidTriangles` once the backend runs).
     UnvalidatedTriangles,
     Polygons,          ///< a side with more than 3 vertices: `b2CollidePolygons` answers
   };
@@ -288,44 +223,28 @@ struct ContactMemory {
   /// (`Config::warm_axis`).
   std::int8_t last_face = -1;
   Shapes shapes = Shapes::Unchecked;  ///< set by the first evaluation
-  /// Triangles (validated or not): the sum, over the two shapes, of the distance from the
-  /// shape's centroid (`m_centroid`) to its farthest vertex, metres, body frame
-  /// (`Config::bounds_early_out`).
+  /// Triangles: the sum of the two shapes' bounding radii about their centroids (metres;
+  /// `Config::bounds_early_out`).
   float radius_sum = 0;
-  /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits,
-  /// then B's), used while the installed backend applies the rule (`Config::internal_edges`). A
-  /// world's contact reads them from fixed edge data or finds them itself; a caller of
-  /// `collide_polygons` sets them.
+  /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits, then
+  /// B's); a world's contact finds them itself, a caller of `collide_polygons` sets them.
   InternalEdges internal_edges{};
 };
 
-/// Registers the plug-in's contact for polygon–polygon pairs, with `backend` (and `config`'s
-/// skips) for triangle pairs, and resets `stats`. Never refused for a backend, and safe at any
-/// moment no thread is stepping a world (see "Threads and lifetimes" above): before the first
-/// step, between the steps of running worlds, with several worlds alive, after a world was
-/// deleted. What holds:
-/// - Box2D makes each contact with whatever is registered at that moment, and every contact is
-///   freed as what it is: the plug-in's destroy function, registered from the first install on
-///   (`uninstall` keeps it), frees its own contacts in their class of Box2D's block allocator and
-///   hands Box2D's own to Box2D's own destroy function.
-/// - Every contact the plug-in made follows the installed backend and skips from the next step
-///   on; after `uninstall` it answers with `b2CollidePolygons`, exactly as Box2D's own contact.
-/// - Contacts Box2D's own code made before the install keep Box2D's answer until they end (when
-///   the two fixtures' fat AABBs stop overlapping): Box2D offers no way to replace a live contact.
-/// Installing the installed backend with the same skips does nothing and succeeds. A value
-/// outside `Backend` is refused (`UnsupportedMethod`) and changes nothing.
+/// Registers the plug-in's contact for polygon–polygon pairs, with `backend` and `config` for
+/// triangle pairs, and resets `stats`. Safe at any moment no thread is stepping a world, even
+/// mid-simulation: the plug-in's contacts follow it from the next step, contacts Box2D made before
+/// it keep Box2D's answer until they end (docs/box2d-plugin.md). A value outside `Backend` is
+/// refused (`UnsupportedMethod`) and changes nothing.
 InstallResult install(Backend backend, const Config& config = Config::all());
 
 /// `install(backend_of(method), config)`; refused (`UnsupportedMethod`) for a method the plug-in
 /// does not offer (`DyopPaper`, `Batch`).
 InstallResult install(Method method, const Config& config = Config::all());
 
-/// Registers again what made polygon pairs' contacts before the plug-in was installed (Box2D's
-/// own `b2PolygonContact`): contacts made from now on are Box2D's own, so a world made after it is
-/// bit-identical to one that never saw the plug-in. The plug-in's destroy function stays
-/// registered: the plug-in's contacts still alive are larger than Box2D's own (another class of
-/// Box2D's block allocator), and it frees Box2D's own through Box2D's own function. Never refused,
-/// safe at any moment `install` is; does nothing when not installed.
+/// Registers Box2D's own `b2PolygonContact` again: a world made after it is bit-identical to one
+/// that never saw the plug-in, and the plug-in's live contacts answer as Box2D's own. Safe
+/// whenever `install` is; does nothing when not installed.
 InstallResult uninstall();
 
 /// The installed backend, or nothing when Box2D's own contact is registered.

@@ -118,16 +118,21 @@ BatchError penetrate_batch(const PairBatch<T>& pairs, Level level, const BatchOu
 struct BatchRowError {
   TriangleError a = TriangleError::None;  ///< A's error
   TriangleError b = TriangleError::None;  ///< B's error
+  /// True when both triangles are valid.
   bool ok() const { return a == TriangleError::None && b == TriangleError::None; }
 };
+
+/// Why row `row` of `pairs` is Invalid (`row` below `pairs.count`).
 template <class T>
 BatchRowError batch_row_error(const PairBatch<T>& pairs, std::size_t row);
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template BatchError penetrate_batch(const PairBatch<float>&, Level,
                                            const BatchOutput<float>&, BatchKernel);
 extern template BatchError penetrate_batch(const PairBatch<double>&, Level,
                                            const BatchOutput<double>&, BatchKernel);
 extern template BatchRowError batch_row_error(const PairBatch<float>&, std::size_t);
 extern template BatchRowError batch_row_error(const PairBatch<double>&, std::size_t);
+/// \endcond
 
 }  // namespace dyop

@@ -37,6 +37,7 @@ Result<T> dyop(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query
 template <class T>
 Result<T> dyop_fast(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query = {});
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> dyop(const Triangle<float>&, const Triangle<float>&,
                                    const Query<float>&);
 extern template Result<double> dyop(const Triangle<double>&, const Triangle<double>&,
@@ -45,5 +46,6 @@ extern template Result<float> dyop_fast(const Triangle<float>&, const Triangle<f
                                         const Query<float>&);
 extern template Result<double> dyop_fast(const Triangle<double>&, const Triangle<double>&,
                                          const Query<double>&);
+/// \endcond
 
 }  // namespace dyop

@@ -37,9 +37,10 @@ template <class T>
 struct PaperLinesOrError {
   InvalidReason reason = InvalidReason::None;  ///< None when the numbers are valid
   PaperLines<T> lines;                         ///< valid only when `reason == None`
-  bool ok() const { return reason == InvalidReason::None; }
+  bool ok() const { return reason == InvalidReason::None; }  ///< true when `reason == None`
 };
 
+/// The paper's lines (eqs. 3–8) for vertex `x` against the line through `p` and `q`.
 template <class T>
 PaperLinesOrError<T> paper_lines(const Vec2<T>& p, const Vec2<T>& q, const Vec2<T>& x);
 
@@ -47,6 +48,7 @@ PaperLinesOrError<T> paper_lines(const Vec2<T>& p, const Vec2<T>& q, const Vec2<
 template <class T>
 Result<T> dyop_paper(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query = {});
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template PaperLinesOrError<float> paper_lines(const Vec2<float>&, const Vec2<float>&,
                                                      const Vec2<float>&);
 extern template PaperLinesOrError<double> paper_lines(const Vec2<double>&, const Vec2<double>&,
@@ -55,5 +57,6 @@ extern template Result<float> dyop_paper(const Triangle<float>&, const Triangle<
                                          const Query<float>&);
 extern template Result<double> dyop_paper(const Triangle<double>&, const Triangle<double>&,
                                           const Query<double>&);
+/// \endcond
 
 }  // namespace dyop

@@ -53,9 +53,11 @@ constexpr int epa_max_iterations = 32;
 template <class T>
 Result<T> epa(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query = {});
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> epa(const Triangle<float>&, const Triangle<float>&,
                                   const Query<float>&);
 extern template Result<double> epa(const Triangle<double>&, const Triangle<double>&,
                                    const Query<double>&);
+/// \endcond
 
 }  // namespace dyop

@@ -72,9 +72,11 @@ template <class T>
 Result<T> lin_canny(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query = {},
                     LinCannyCache* cache = nullptr);
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> lin_canny(const Triangle<float>&, const Triangle<float>&,
                                         const Query<float>&, LinCannyCache*);
 extern template Result<double> lin_canny(const Triangle<double>&, const Triangle<double>&,
                                          const Query<double>&, LinCannyCache*);
+/// \endcond
 
 }  // namespace dyop

@@ -237,6 +237,7 @@ constexpr const char* name(const Variant& v) { return variant_name(v.method, v.w
 constexpr bool operator==(const Variant& x, const Variant& y) {
   return x.method == y.method && x.warm == y.warm;
 }
+/// True when `x` and `y` differ in method or warmth.
 constexpr bool operator!=(const Variant& x, const Variant& y) { return !(x == y); }
 
 /// Every variant of the rows `keep(row)` accepts, in registry order, cold before warm.
@@ -296,10 +297,12 @@ template <class T>
 Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,
                     const Query<T>& query = {}, PairState* state = nullptr);
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> penetrate(Method, const Triangle<float>&, const Triangle<float>&,
                                         const Query<float>&, PairState*);
 extern template Result<double> penetrate(Method, const Triangle<double>&,
                                          const Triangle<double>&, const Query<double>&,
                                          PairState*);
+/// \endcond
 
 }  // namespace dyop

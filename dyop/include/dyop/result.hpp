@@ -141,6 +141,7 @@ struct Query {
 
 /// A vertex or an edge of one triangle, by caller's index.
 struct Feature {
+  /// What the feature is: none computed, a vertex or an edge.
   enum class Type : std::uint8_t { None, Vertex, Edge };
   Type type = Type::None;  ///< None when no feature was computed
   std::uint8_t index = 0;  ///< caller's vertex index, or caller's edge index (edge i: vertex i→i+1)

@@ -18,9 +18,11 @@ namespace dyop {
 template <class T>
 Result<T> sat(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query = {});
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> sat(const Triangle<float>&, const Triangle<float>&,
                                   const Query<float>&);
 extern template Result<double> sat(const Triangle<double>&, const Triangle<double>&,
                                    const Query<double>&);
+/// \endcond
 
 }  // namespace dyop

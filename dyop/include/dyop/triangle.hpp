@@ -190,10 +190,12 @@ template <class T>
 struct TriangleOrError {
   TriangleError error = TriangleError::None;  ///< None when `triangle` is valid
   Triangle<T> triangle;                       ///< valid only when `error == None`
-  bool ok() const { return error == TriangleError::None; }
+  bool ok() const { return error == TriangleError::None; }  ///< true when `error == None`
 };
 
+/// \cond EXPLICIT_INSTANTIATIONS
 extern template class Triangle<float>;
 extern template class Triangle<double>;
+/// \endcond
 
 }  // namespace dyop
