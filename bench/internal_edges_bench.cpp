@@ -72,8 +72,9 @@ void run(const Map& map) {
 }  // namespace
 
 int main() {
-  std::printf("| triangles | bodies | broad phase built (ms) | all masks found (ms) | per triangle "
-              "(µs) | internal edges |\n|---:|---:|---:|---:|---:|---:|\n");
+  std::printf(
+      "| triangles | bodies | broad phase built (ms) | all masks found (ms) | per triangle "
+      "(µs) | internal edges |\n|---:|---:|---:|---:|---:|---:|\n");
   for (const Map& m : {Map{10000, 1}, Map{10000, 100}, Map{10000, 5000}, Map{100000, 1},
                        Map{100000, 100}, Map{100000, 10000}}) {
     run(m);

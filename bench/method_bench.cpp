@@ -8,7 +8,8 @@
 // batch per iteration; their items_per_second is pairs per second and their label names the kernel
 // that ran (BM_batch: the one Auto picks here; BM_batch-<kernel>: each forced, skipped where the
 // CPU lacks it). BM_stream/<scene>/<backend>
-// replays a Box2D scene's recorded contact updates, one per iteration (box2d-own: b2CollidePolygons).
+// replays a Box2D scene's recorded contact updates, one per iteration (box2d-own:
+// b2CollidePolygons).
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -87,8 +88,7 @@ void bm_warm(benchmark::State& state, Method m, InputClass c, Level l) {
   std::size_t i = 0;
   bool next_frame = true;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        penetrate(m, s.a[i], next_frame ? s.b_next[i] : s.b[i], q, &cache[i]));
+    benchmark::DoNotOptimize(penetrate(m, s.a[i], next_frame ? s.b_next[i] : s.b[i], q, &cache[i]));
     if (++i == s.size()) {
       i = 0;
       next_frame = !next_frame;
@@ -128,7 +128,8 @@ void bm_batch(benchmark::State& state, InputClass c, Level l, std::size_t pairs,
 void bm_box2d(benchmark::State& state, InputClass c) {
   static std::map<InputClass, workloads::Box2DPairSet> sets;
   auto it = sets.find(c);
-  if (it == sets.end()) it = sets.emplace(c, workloads::make_box2d_pair_set(pairs_of<float>(c))).first;
+  if (it == sets.end())
+    it = sets.emplace(c, workloads::make_box2d_pair_set(pairs_of<float>(c))).first;
   const workloads::Box2DPairSet& s = it->second;
   b2Manifold manifold;
   std::size_t i = 0;
@@ -162,7 +163,8 @@ void bm_stream(benchmark::State& state, const std::string& scene,
   const experiments::ContactStream& s = stream_of(scene);
   const auto fresh = [&] {
     std::vector<box2d::ContactMemory> m(s.contacts.size());
-    for (std::size_t k = 0; masks && k < m.size(); ++k) m[k].internal_edges = s.contacts[k].internal_edges;
+    for (std::size_t k = 0; masks && k < m.size(); ++k)
+      m[k].internal_edges = s.contacts[k].internal_edges;
     return m;
   };
   std::vector<box2d::ContactMemory> memory = fresh();
@@ -219,8 +221,8 @@ void register_method(const MethodInfo& row) {
   for (InputClass c : workloads::bench_classes) {
     for (Level l : all_levels) {
       if (!row.has(l)) continue;
-      const std::string tail = std::string("/") + workloads::name(c) + "/" + name(l) + "/" +
-                               precision_name<T>();
+      const std::string tail =
+          std::string("/") + workloads::name(c) + "/" + name(l) + "/" + precision_name<T>();
       const auto bm = [&](const char* spelling) { return "BM_" + std::string(spelling) + tail; };
       switch (row.entry) {
         case Entry::PerPair:

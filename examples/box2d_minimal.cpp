@@ -54,11 +54,12 @@ int main() {
   const float height = body->GetPosition().y;
   const float expected = 2 * b2_polygonRadius - b2_linearSlop;
   const dyop::box2d::Stats stats = dyop::box2d::stats();
-  std::printf("resting height %.4f m (expected %.4f m); %llu triangle pairs through %s, %llu "
-              "manifolds\n",
-              height, expected,
-              static_cast<unsigned long long>(stats.triangles(dyop::box2d::Backend::Dyop)),
-              dyop::box2d::name(dyop::box2d::Backend::Dyop),
-              static_cast<unsigned long long>(stats.manifolds));
+  std::printf(
+      "resting height %.4f m (expected %.4f m); %llu triangle pairs through %s, %llu "
+      "manifolds\n",
+      height, expected,
+      static_cast<unsigned long long>(stats.triangles(dyop::box2d::Backend::Dyop)),
+      dyop::box2d::name(dyop::box2d::Backend::Dyop),
+      static_cast<unsigned long long>(stats.manifolds));
   return std::abs(height - expected) <= 0.1f * b2_linearSlop ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -43,7 +43,8 @@ void check_csv(const std::string& text, bool use_float) {
   const cli::PairsSummary s = cli::run_pairs(options, in, out);
   const int methods = static_cast<int>(options.methods.size());
   const int expected = data_lines(text) * methods;
-  if (s.rows != expected || s.ok + s.errors != s.rows) fail("summary does not count every line", "");
+  if (s.rows != expected || s.ok + s.errors != s.rows)
+    fail("summary does not count every line", "");
   std::istringstream lines(out.str());
   std::string line;
   std::getline(lines, line);
@@ -63,11 +64,13 @@ void check_csv(const std::string& text, bool use_float) {
     if (row < last_row) fail("rows out of input order", line);
     last_row = row;
     if (status == "error") {
-      if (line.size() < c3 + 10 || line.find('"', c3) == std::string::npos) fail("error without a message", line);
+      if (line.size() < c3 + 10 || line.find('"', c3) == std::string::npos)
+        fail("error without a message", line);
       continue;
     }
     if (status != "ok") fail("status neither ok nor error", line);
-    if (method != "box2d" && (line.find("nan") != std::string::npos || line.find("inf") != std::string::npos)) {
+    if (method != "box2d" &&
+        (line.find("nan") != std::string::npos || line.find("inf") != std::string::npos)) {
       fail("NaN or inf in an ok line", line);
     }
   }

@@ -108,9 +108,9 @@ void check_batch(const FuzzInput& in, const TriangleOrError<T>& a, const Triangl
     return Vec2<T>(T(in.coords[6 * side + 2 * i]), T(in.coords[6 * side + 2 * i + 1]));
   });
   const PairBatch<T> batch = arrays.pairs();
-  require(penetrate_batch(batch, Level::Depth, arrays.out(), BatchKernel::Portable) ==
-              BatchError::None,
-          "batch refused a plain call", in);
+  require(
+      penetrate_batch(batch, Level::Depth, arrays.out(), BatchKernel::Portable) == BatchError::None,
+      "batch refused a plain call", in);
   check_kernels_agree(in, batch, arrays);
   const std::vector<Status>& status = arrays.status;
   const std::vector<T>& sep = arrays.separation;
@@ -166,8 +166,8 @@ void run(const FuzzInput& in) {
     q.face_hysteresis = T(0.001) * size;
     const Result<T> r = penetrate(m, a.triangle, b.triangle, q, &cache);
     if (r.status == Status::Invalid) {
-      require(m == Method::DyopPaper && r.reason != InvalidReason::None,
-              "Invalid on a valid pair", in);
+      require(m == Method::DyopPaper && r.reason != InvalidReason::None, "Invalid on a valid pair",
+              in);
       continue;
     }
     require(finite_at(r, level), "NaN or inf in a field the level promises", in);
@@ -180,7 +180,8 @@ void run(const FuzzInput& in) {
     const Result<T> s = sat(a.triangle, b.triangle);
     require(std::abs(double(r.separation) - double(s.separation)) <= agreement<T>(in),
             "dyop and sat disagree on separation", in);
-    if (std::abs(s.separation) > 2 * band) require(r.status == s.status, "dyop and sat disagree on status", in);
+    if (std::abs(s.separation) > 2 * band)
+      require(r.status == s.status, "dyop and sat disagree on status", in);
   }
   if (m == Method::Dyop || m == Method::Sat) {
     // Asking for the proof of separation instead of the distance changes no status, and the

@@ -57,7 +57,7 @@ constexpr int kWorlds = 3;
 constexpr float kScales[8] = {0.01f, 0.05f, 0.25f, 1.0f, 1.0f, 4.0f, 50.0f, 1000.0f};
 // Body positions' offsets from the origin (m).
 constexpr float kFar[8] = {0.0f, 0.0f, 0.0f, 0.0f, 1e3f, -1e4f, 3e4f, 1e5f};
-constexpr float kTimeSteps[8] = {1.0f / 60, 1.0f / 240, 1.0f / 30, 1.0f / 60,
+constexpr float kTimeSteps[8] = {1.0f / 60,  1.0f / 240, 1.0f / 30, 1.0f / 60,
                                  1.0f / 120, 1e-4f,      0.1f,      1e-6f};
 constexpr float kSpeeds[4] = {0.1f, 1.0f, 10.0f, 300.0f};  // m/s per unit of a signed byte / 16
 // A sliver's height, or a needle's width, per unit of its length.
@@ -74,8 +74,8 @@ constexpr float kPi = 3.14159265358979f;
 // a few FLT_EPSILON of m·|c|²).
 constexpr float kBodyReach = 30.0f;
 // Margins on Box2D's own thresholds, so that its float rounding cannot cross them.
-constexpr float kWeldMargin = 1.1f;       // `b2PolygonShape::Set` welds points closer than 0.5 slop
-constexpr float kAreaMargin = 4.0f;       // its centroid asserts area > b2_epsilon
+constexpr float kWeldMargin = 1.1f;  // `b2PolygonShape::Set` welds points closer than 0.5 slop
+constexpr float kAreaMargin = 4.0f;  // its centroid asserts area > b2_epsilon
 constexpr float kTurnMargin = 64 * FLT_EPSILON;  // a hull corner's sine, robust in float
 
 float s8(std::uint8_t b) { return static_cast<float>(static_cast<std::int8_t>(b)); }
@@ -84,17 +84,16 @@ float hi(std::uint8_t b) { return static_cast<float>(b >> 4) - 8.0f; }
 
 const char* kind_name(OpKind k) {
   constexpr const char* names[static_cast<int>(OpKind::Count)] = {
-      "new world",   "end world",      "create body",   "destroy body",   "add triangle",
-      "add mesh",    "add polygon",    "add circle",    "destroy fixture", "teleport",
-      "set type",    "set enabled",    "set velocity",  "apply impulse",  "install",
-      "uninstall",   "fix edges",      "refresh edges", "forget edges",   "step",
+      "new world",  "end world",   "create body",   "destroy body",    "add triangle",
+      "add mesh",   "add polygon", "add circle",    "destroy fixture", "teleport",
+      "set type",   "set enabled", "set velocity",  "apply impulse",   "install",
+      "uninstall",  "fix edges",   "refresh edges", "forget edges",    "step",
       "world flags"};
   return names[static_cast<int>(k)];
 }
 
 b2BodyType body_type(int k) {
-  constexpr b2BodyType types[4] = {b2_staticBody, b2_kinematicBody, b2_dynamicBody,
-                                   b2_dynamicBody};
+  constexpr b2BodyType types[4] = {b2_staticBody, b2_kinematicBody, b2_dynamicBody, b2_dynamicBody};
   return types[k & 3];
 }
 const char* type_name(int k) {
@@ -311,9 +310,9 @@ void Player::create_body(const WorldOp& op) {
   def.bullet = k == 3;
   def.position = position(op.arg[2], op.arg[3], op.arg[4]);
   def.angle = s8(op.arg[5]) * kPi / 64;
-  note("world %d: create %s body %d at (%.9g, %.9g) angle %.9g", op.arg[0] % kWorlds,
-       type_name(k), w ? static_cast<int>(slots_[*w].bodies.size()) : -1, def.position.x,
-       def.position.y, def.angle);
+  note("world %d: create %s body %d at (%.9g, %.9g) angle %.9g", op.arg[0] % kWorlds, type_name(k),
+       w ? static_cast<int>(slots_[*w].bodies.size()) : -1, def.position.x, def.position.y,
+       def.angle);
   if (!w) return skip("no such world");
   if (bodies_ >= max_bodies) return skip("body bound");
   slots_[*w].bodies.push_back(slots_[*w].world->CreateBody(&def));
@@ -395,9 +394,8 @@ void Player::add_mesh(b2Body& body, const WorldOp& op) {
   }
   if (!room_for_fixtures(triangles)) return;
   const box2d::MeshResult r =
-      box2d::add_triangles(body, vertices.data(), static_cast<int>(vertices.size()),
-                           indices.data(), static_cast<int>(indices.size()),
-                           fixture_def(op.arg[5]));
+      box2d::add_triangles(body, vertices.data(), static_cast<int>(vertices.size()), indices.data(),
+                           static_cast<int>(indices.size()), fixture_def(op.arg[5]));
   if (!r.ok()) return skip(r.message);
   fixtures_ += triangles;
   ++result_.played;
@@ -416,8 +414,8 @@ void Player::add_polygon(b2Body& body, const WorldOp& op) {
     const float a = turn + 2 * kPi * static_cast<float>(i) / static_cast<float>(n);
     v[i] = centre + b2Vec2(stretch * r * std::cos(a), r * std::sin(a));
   }
-  note("body %d of world %d: add %d-gon radius %.9g stretch %.9g at (%.9g, %.9g)",
-       index_of(&body), where(&body), n, r, stretch, centre.x, centre.y);
+  note("body %d of world %d: add %d-gon radius %.9g stretch %.9g at (%.9g, %.9g)", index_of(&body),
+       where(&body), n, r, stretch, centre.x, centre.y);
   if (const char* why = polygon_refusal(v, n)) return skip(why);
   if (!room_for_fixtures(1)) return;
   b2PolygonShape shape;
@@ -431,8 +429,8 @@ void Player::add_circle(b2Body& body, const WorldOp& op) {
   b2CircleShape shape;
   shape.m_radius = kScales[op.arg[1] & 7];
   shape.m_p.Set(shape.m_radius * lo(op.arg[2]), shape.m_radius * hi(op.arg[2]));
-  note("body %d of world %d: add circle radius %.9g at (%.9g, %.9g)", index_of(&body),
-       where(&body), shape.m_radius, shape.m_p.x, shape.m_p.y);
+  note("body %d of world %d: add circle radius %.9g at (%.9g, %.9g)", index_of(&body), where(&body),
+       shape.m_radius, shape.m_p.x, shape.m_p.y);
   if (!room_for_fixtures(1)) return;
   add_fixture(body, shape, op.arg[3]);
   ++result_.played;
@@ -527,10 +525,10 @@ void Player::install(const WorldOp& op) {
   c.internal_edges = (op.arg[1] & 8) == 0;
   c.recycle_distance = kRecycle[op.arg[2] & 3];
   note("install %s (bounds %d, warm axis %d, lin-canny cache %d, internal edges %d, recycle %g)",
-       box2d::name(written), c.bounds_early_out, c.warm_axis, c.lin_canny_cache,
-       c.internal_edges, c.recycle_distance);
+       box2d::name(written), c.bounds_early_out, c.warm_axis, c.lin_canny_cache, c.internal_edges,
+       c.recycle_distance);
   ++result_.played;
-  const Backend backend = installs_ == Installs::Box2D ? Backend::Box2D
+  const Backend backend = installs_ == Installs::Box2D  ? Backend::Box2D
                           : installs_ == Installs::Dyop ? Backend::Dyop
                           : installs_ == Installs::Sat  ? Backend::Sat
                                                         : written;

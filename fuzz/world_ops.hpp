@@ -86,12 +86,12 @@ PlayResult play_world_ops(const std::vector<WorldOp>& ops, Installs installs,
 
 // The oracles of fuzz_world, each from the plays it needs.
 struct WorldVerdict {
-  bool finite = true;            // as written, no body position or angle goes NaN or infinite
-  bool repeatable = true;        // as written twice in one process, the same hash
-  bool box2d_is_own = true;      // `Box2D` ends bit-identical to `Never`
-  bool dyop_is_sat = true;       // `Dyop` ends bit-identical to `Sat`
-  PlayResult as_written;         // the first play as written
-  const char* failure() const;   // the first property broken, or nullptr
+  bool finite = true;           // as written, no body position or angle goes NaN or infinite
+  bool repeatable = true;       // as written twice in one process, the same hash
+  bool box2d_is_own = true;     // `Box2D` ends bit-identical to `Never`
+  bool dyop_is_sat = true;      // `Dyop` ends bit-identical to `Sat`
+  PlayResult as_written;        // the first play as written
+  const char* failure() const;  // the first property broken, or nullptr
 };
 
 WorldVerdict judge_world_ops(const std::vector<WorldOp>& ops);

@@ -31,11 +31,11 @@ using V2 = Vec2<double>;
 constexpr BatchKernel kForced[] = {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512};
 
 constexpr InputClass kEveryClass[] = {
-    InputClass::General,      InputClass::Overlapping, InputClass::Mixed,
-    InputClass::Separated,    InputClass::Apart,       InputClass::AxisAligned,
-    InputClass::Sliver,       InputClass::NearParallel, InputClass::Far,
-    InputClass::Scale,        InputClass::Contained,   InputClass::Identical,
-    InputClass::Touching,     InputClass::TouchingUlp, InputClass::NearlyCollinear};
+    InputClass::General,   InputClass::Overlapping,  InputClass::Mixed,
+    InputClass::Separated, InputClass::Apart,        InputClass::AxisAligned,
+    InputClass::Sliver,    InputClass::NearParallel, InputClass::Far,
+    InputClass::Scale,     InputClass::Contained,    InputClass::Identical,
+    InputClass::Touching,  InputClass::TouchingUlp,  InputClass::NearlyCollinear};
 
 constexpr std::uint64_t kStressSeed = 2027;  // `dyop stress`'s default (StressOptions::seed)
 
@@ -240,8 +240,8 @@ TEST(BatchKernelChoice, AutoRunsTheWidestAvailableKernel) {
                              : batch_kernel_available(BatchKernel::Avx2) ? BatchKernel::Avx2
                                                                          : BatchKernel::Portable;
   EXPECT_EQ(used, widest);
-  for (BatchKernel k : {BatchKernel::Auto, BatchKernel::Portable, BatchKernel::Avx2,
-                        BatchKernel::Avx512}) {
+  for (BatchKernel k :
+       {BatchKernel::Auto, BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
     EXPECT_GT(std::string(name(k)).size(), 0u);
   }
   EXPECT_EQ(std::string(name(BatchKernel::Avx512)), "avx512");

@@ -145,7 +145,8 @@ class Batch : public ::testing::Test {
  protected:
   using T = typename C::T;
   void SetUp() override {
-    if (!batch_kernel_available(C::kernel)) GTEST_SKIP() << name(C::kernel) << " not available here";
+    if (!batch_kernel_available(C::kernel))
+      GTEST_SKIP() << name(C::kernel) << " not available here";
   }
   BatchError run(const Columns<T>& cols, std::size_t count, Level level, Outputs<T>& out) {
     return penetrate_batch(cols.batch(count), level, out.out(), C::kernel);
@@ -346,8 +347,8 @@ TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
 
 // Squared edge lengths beyond the range of the vector lanes' reciprocal square root estimate (below
 // the smallest normal float, or above the largest float in double) send their rows to the portable
-// code: every kernel then gives the same bits for them, and sat's answer. Such rows sit at several lanes and
-// in the tail, among ordinary ones.
+// code: every kernel then gives the same bits for them, and sat's answer. Such rows sit at several
+// lanes and in the tail, among ordinary ones.
 TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
   using T = typename TypeParam::T;
   const bool is_float = std::is_same_v<T, float>;
@@ -476,7 +477,8 @@ TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap)
 // Contact and Manifold are refused, as are missing arrays; nothing is written then.
 TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
   using T = typename TypeParam::T;
-  const Columns<T> cols = columns<T>(workloads::make_valid_pairs(workloads::InputClass::General, 10, 1));
+  const Columns<T> cols =
+      columns<T>(workloads::make_valid_pairs(workloads::InputClass::General, 10, 1));
   Outputs<T> out(cols.size());
   EXPECT_EQ(this->run(cols, cols.size(), Level::Contact, out), BatchError::UnsupportedLevel);
   EXPECT_EQ(this->run(cols, cols.size(), Level::Manifold, out), BatchError::UnsupportedLevel);
@@ -511,12 +513,18 @@ namespace {
 // rounded to 0) and moved off it by one part in 3e13 (a small positive overlap).
 TEST(SliversEndToEnd, ALeastOverlapInsideTheBandIsDecidedByTheDistanceInEveryExactMethod) {
   for (const double tip_x : {-2.1482046286569577e+139, -2.1482046286570254e+139}) {
-    const double c[12] = {-6.2531702115077586e-269, 1.3403042625207296e-84,
-                          8.1968741050497943e+107,  8.1968741124263195e+107,
-                          8.196874112425652e+107,   8.1968741124263195e+107,
-                          -9.8683099107386407e+148, -9.8683099208633679e+148,
-                          -9.8683099208633679e+148, -9.8683099208633679e+148,
-                          tip_x,                    -2.1482046286569577e+139};
+    const double c[12] = {-6.2531702115077586e-269,
+                          1.3403042625207296e-84,
+                          8.1968741050497943e+107,
+                          8.1968741124263195e+107,
+                          8.196874112425652e+107,
+                          8.1968741124263195e+107,
+                          -9.8683099107386407e+148,
+                          -9.8683099208633679e+148,
+                          -9.8683099208633679e+148,
+                          -9.8683099208633679e+148,
+                          tip_x,
+                          -2.1482046286569577e+139};
     const auto a = Triangle<double>::make({c[0], c[1]}, {c[2], c[3]}, {c[4], c[5]});
     const auto b = Triangle<double>::make({c[6], c[7]}, {c[8], c[9]}, {c[10], c[11]});
     ASSERT_TRUE(a.ok() && b.ok());

@@ -63,11 +63,9 @@ TEST(PairCsv, EveryMalformedLineNamesWhatIsWrong) {
 
 TEST(PairCsv, DegenerateAndFloatOverflowingTrianglesAreErrorsNamingTheTriangle) {
   const std::array<double, pair_fields> collinear{0, 0, 1, 1, 2, 2, 0, 0, 1, 0, 0, 1};
-  EXPECT_NE(make_pair_triangles<double>(collinear).message.find("triangle ABC"),
-            std::string::npos);
+  EXPECT_NE(make_pair_triangles<double>(collinear).message.find("triangle ABC"), std::string::npos);
   const std::array<double, pair_fields> repeated{0, 0, 1, 0, 0, 1, 5, 5, 5, 5, 6, 6};
-  EXPECT_NE(make_pair_triangles<double>(repeated).message.find("triangle PQR"),
-            std::string::npos);
+  EXPECT_NE(make_pair_triangles<double>(repeated).message.find("triangle PQR"), std::string::npos);
   const std::array<double, pair_fields> huge{0, 0, 1e300, 0, 0, 1, 0, 0, 1, 0, 0, 1};
   EXPECT_NE(make_pair_triangles<double>(huge).message.find("too large"), std::string::npos);
   const std::array<double, pair_fields> beyond_float{0, 0, 1e39, 0, 0, 1, 0, 0, 1, 0, 0, 1};

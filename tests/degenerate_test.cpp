@@ -117,13 +117,15 @@ void check_pairs(const std::vector<RawPair>& rows, Sweep& sweep) {
         EXPECT_NE(r.reason, InvalidReason::None);
         continue;
       }
-      ASSERT_TRUE(all_finite(r)) << name(m) << " on " << p.a[2].transpose() << " / " << p.b[0].transpose();
+      ASSERT_TRUE(all_finite(r)) << name(m) << " on " << p.a[2].transpose() << " / "
+                                 << p.b[0].transpose();
       if (m != Method::Sat && m != Method::Dyop) continue;
       const double error = std::abs(double(r.separation) - exact.separation) / size;
       sweep.worst_exact_error = std::max(sweep.worst_exact_error, error);
       EXPECT_LE(error, bound) << name(m);
       if (std::abs(exact.separation) > band) {
-        EXPECT_EQ(r.status, exact.separation < 0 ? Status::Penetrating : Status::Separated) << name(m);
+        EXPECT_EQ(r.status, exact.separation < 0 ? Status::Penetrating : Status::Separated)
+            << name(m);
       }
     }
   }
@@ -145,15 +147,27 @@ void check_batch(const std::vector<RawPair>& rows) {
       c[7 + 2 * i][k] = T(rows[k].b[i].y());
     }
   }
-  const PairBatch<T> batch{c[0].data(), c[1].data(), c[2].data(),  c[3].data(),
-                           c[4].data(), c[5].data(), c[6].data(),  c[7].data(),
-                           c[8].data(), c[9].data(), c[10].data(), c[11].data(), n};
+  const PairBatch<T> batch{c[0].data(),
+                           c[1].data(),
+                           c[2].data(),
+                           c[3].data(),
+                           c[4].data(),
+                           c[5].data(),
+                           c[6].data(),
+                           c[7].data(),
+                           c[8].data(),
+                           c[9].data(),
+                           c[10].data(),
+                           c[11].data(),
+                           n};
   for (BatchKernel kernel : {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
     if (!batch_kernel_available(kernel)) continue;
     std::vector<Status> status(n);
     std::vector<T> sep(n), nx(n), ny(n);
-    ASSERT_EQ(penetrate_batch(batch, Level::Depth, BatchOutput<T>{status.data(), sep.data(), nx.data(), ny.data()}, kernel),
-              BatchError::None);
+    ASSERT_EQ(
+        penetrate_batch(batch, Level::Depth,
+                        BatchOutput<T>{status.data(), sep.data(), nx.data(), ny.data()}, kernel),
+        BatchError::None);
     for (std::size_t k = 0; k < n; ++k) {
       const auto t = build<T>(rows[k]);
       const BatchRowError e = batch_row_error(batch, k);
@@ -196,9 +210,11 @@ TYPED_TEST(Degenerate, FlatnessSweepIsRejectedAsDegenerateOrAnsweredExactly) {
           if (!t.ok()) {
             ++sweep.rejected;
             // Rounding may have put two vertices on one point; otherwise it is the flatness.
-            EXPECT_TRUE(t.error == TriangleError::Degenerate || t.error == TriangleError::RepeatedVertex)
+            EXPECT_TRUE(t.error == TriangleError::Degenerate ||
+                        t.error == TriangleError::RepeatedVertex)
                 << describe(t.error);
-            EXPECT_NE(std::string(describe(t.error)).find(t.error == TriangleError::Degenerate ? "degenerate" : "repeated"),
+            EXPECT_NE(std::string(describe(t.error))
+                          .find(t.error == TriangleError::Degenerate ? "degenerate" : "repeated"),
                       std::string::npos);
             EXPECT_LT(f, 2 * tolerance) << "rejected a triangle clearly flatter than needed";
             continue;
@@ -239,7 +255,8 @@ TYPED_TEST(Degenerate, TinyTrianglesAreRejectedAsTooSmallOrAnsweredExactly) {
         Tri small;
         for (int i = 0; i < 3; ++i) small[i] = scale * a[i];
         small = rounded_tri(precision, small);
-        const auto t = Triangle<T>::make(small[0].cast<T>(), small[1].cast<T>(), small[2].cast<T>());
+        const auto t =
+            Triangle<T>::make(small[0].cast<T>(), small[1].cast<T>(), small[2].cast<T>());
         const double longest = std::max({(small[1] - small[0]).norm(), (small[2] - small[1]).norm(),
                                          (small[0] - small[2]).norm()});
         if (!t.ok()) {
@@ -343,11 +360,11 @@ TEST(DegenerateCsv, RejectedLinesNameTheProblemAndEveryOtherLineIsAnswered) {
   const std::string good = "0,0,1,0,0,1,0.2,0.2,1.2,0.2,0.2,1.2";
   const std::string lines[] = {
       good,
-      "0,0,1,0,0.5,1e-7,0.2,-0.5,0.8,-0.5,0.5,0.5",    // flatness 1e-7: valid double, float no
+      "0,0,1,0,0.5,1e-7,0.2,-0.5,0.8,-0.5,0.5,0.5",  // flatness 1e-7: valid double, float no
       good,
-      "0,0,1,0,0.5,1e-16,0.2,-0.5,0.8,-0.5,0.5,0.5",   // flatness 1e-16: degenerate in both
-      "0,0,1,0,0,1,1e300,0,0,1e300,0.2,0.2",           // beyond float, and too large for double
-      "0,0,1,0,0,1,0.5,0.5,0.5,0.5,2,2",               // repeated vertex in PQR
+      "0,0,1,0,0.5,1e-16,0.2,-0.5,0.8,-0.5,0.5,0.5",  // flatness 1e-16: degenerate in both
+      "0,0,1,0,0,1,1e300,0,0,1e300,0.2,0.2",          // beyond float, and too large for double
+      "0,0,1,0,0,1,0.5,0.5,0.5,0.5,2,2",              // repeated vertex in PQR
       good,
   };
   std::string text = "# near-degenerate lines among good ones\n";
@@ -379,7 +396,7 @@ TEST(DegenerateCsv, RejectedLinesNameTheProblemAndEveryOtherLineIsAnswered) {
                          line.find("out of range") != std::string::npos ||
                          line.find("too large") != std::string::npos ||
                          line.find("repeated") != std::string::npos ||
-                         line.find("vertical") != std::string::npos ||   // dyop-paper, by design
+                         line.find("vertical") != std::string::npos ||  // dyop-paper, by design
                          line.find("origin") != std::string::npos;
       EXPECT_TRUE(named) << line;
     }

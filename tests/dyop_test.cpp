@@ -147,8 +147,8 @@ TEST(Dyop, ManifoldWithoutWitnessesIsTheManifoldWithThemBitForBit) {
                                       full);
             with_points += full.manifold.point_count > 0;
             if (!f.a.ok() || !f.b.ok()) continue;
-            const Query<float> qf{Level::Manifold, float(q.margin), float(q.face_hysteresis),
-                                  apart, m};
+            const Query<float> qf{Level::Manifold, float(q.margin), float(q.face_hysteresis), apart,
+                                  m};
             Query<float> bare_f = qf;
             bare_f.witnesses = false;
             expect_same_but_witnesses(penetrate(row.method, f.a.triangle, f.b.triangle, bare_f),
@@ -200,13 +200,13 @@ TEST(InternalEdgesRule, APairApartBeyondTheMarginIsAnsweredAsWithoutMasks) {
         const auto f = build<float>(p);
         const Query<double> q{Level::Manifold, 0.05 * pair_size(p), 0.01 * pair_size(p),
                               Apart::Gap};
-        apart += expect_apart_beyond_margin_ignores_masks(row.method, d.a.triangle, d.b.triangle,
-                                                          q);
+        apart +=
+            expect_apart_beyond_margin_ignores_masks(row.method, d.a.triangle, d.b.triangle, q);
         if (!f.a.ok() || !f.b.ok()) continue;
         const Query<float> qf{Level::Manifold, float(q.margin), float(q.face_hysteresis),
                               Apart::Gap};
-        apart += expect_apart_beyond_margin_ignores_masks(row.method, f.a.triangle, f.b.triangle,
-                                                          qf);
+        apart +=
+            expect_apart_beyond_margin_ignores_masks(row.method, f.a.triangle, f.b.triangle, qf);
       }
     }
   }

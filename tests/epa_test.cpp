@@ -151,8 +151,8 @@ TYPED_TEST(Epa, BoundaryTripleJustApartTouchingAndDeep) {
 TYPED_TEST(Epa, ClockwiseInputReportsFeaturesInTheCallersOrder) {
   using T = TypeParam;
   {
-    const auto a = tri<T>(0, 0, 1, 1, 2, 0);     // apex (1, 1) is the caller's vertex 1
-    const auto b = tri<T>(-1, 2, 1, 4, 3, 2);    // bottom edge is caller's 2 (vertex 2 → 0)
+    const auto a = tri<T>(0, 0, 1, 1, 2, 0);   // apex (1, 1) is the caller's vertex 1
+    const auto b = tri<T>(-1, 2, 1, 4, 3, 2);  // bottom edge is caller's 2 (vertex 2 → 0)
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Separated);
     EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 1}, {Feature::Type::Edge, 2}));
@@ -226,8 +226,8 @@ TYPED_TEST(Epa, AccuracyIsRelativeToSizeNotToDistanceFromTheOrigin) {
   using T = TypeParam;
   for (T offset : {T(0), T(1e3), T(1e6)}) {
     const auto a = tri<T>(offset, offset, offset + 4, offset, offset, offset + 4);
-    const auto b = tri<T>(offset + 1, offset - 1, offset + 2, offset - 1, offset + 1.5,
-                          offset + T(0.25));
+    const auto b =
+        tri<T>(offset + 1, offset - 1, offset + 2, offset - 1, offset + 1.5, offset + T(0.25));
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Penetrating);
     EXPECT_NEAR(r.depth, 0.25, tol<T>() * std::max(T(1), offset * Eigen::NumTraits<T>::epsilon()));
@@ -258,10 +258,10 @@ TYPED_TEST(Epa, SwappingTheTrianglesReversesTheNormal) {
 // ---------------------------------------------------------------------------------------------
 // Randomized agreement with `sat` (double).
 
-using workloads::test_classes;
 using workloads::build;
 using workloads::InputClass;
 using workloads::RawPair;
+using workloads::test_classes;
 
 // |epa − sat| / pair size on the separation. Measured (the summary this test prints, and 10 ×
 // 100 000 pairs on other seeds): at most 4e-16 in every class but near-parallel, 3.2e-15 there,
@@ -355,9 +355,9 @@ TEST_P(EpaAgreesWithSat, SeparationStatusAndNormalAgreeOnRandomPairs) {
       "%-16s pen %4d err max %.1e mean %.1e | sep %4d err max %.1e mean %.1e | status %d+%d | "
       "angle max %.1e ties %d | iterations mean %.2f max %d\n",
       workloads::name(GetParam()), fig.penetrating, fig.max_pen_error,
-      fig.penetrating ? fig.sum_pen_error / fig.penetrating : 0.0, fig.separated,
-      fig.max_sep_error, fig.separated ? fig.sum_sep_error / fig.separated : 0.0,
-      fig.status_disagreements, fig.band_disagreements, fig.max_angle, fig.ties,
+      fig.penetrating ? fig.sum_pen_error / fig.penetrating : 0.0, fig.separated, fig.max_sep_error,
+      fig.separated ? fig.sum_sep_error / fig.separated : 0.0, fig.status_disagreements,
+      fig.band_disagreements, fig.max_angle, fig.ties,
       static_cast<double>(fig.sum_iterations) / fig.pairs, fig.max_iterations);
 }
 

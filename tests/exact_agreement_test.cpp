@@ -53,7 +53,8 @@ TEST_P(ExactAgreement, SatAndDyopMatchTheRationalReferenceWithin1e12OfPairSize) 
 INSTANTIATE_TEST_SUITE_P(EveryClass, ExactAgreement, ::testing::ValuesIn(test_classes),
                          [](const auto& info) {
                            std::string n = name(info.param);
-                           for (char& c : n) if (c == '-') c = '_';
+                           for (char& c : n)
+                             if (c == '-') c = '_';
                            return n;
                          });
 

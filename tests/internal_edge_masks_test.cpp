@@ -102,7 +102,8 @@ TYPED_TEST(InternalEdgeMasks, TriangleOfBStraddlingAnInternalEdge) {
   for_exact_methods<T>([&](Method m) {
     const Result<T> plain = penetrate(m, a, b, query<T>(Level::Depth, 0, 0));
     EXPECT_NEAR(plain.depth, T(0.5), 10 * tol<T>());
-    const Result<T> r = penetrate(m, a, b, query<T>(Level::Manifold, ground_edges, ground_vertices));
+    const Result<T> r =
+        penetrate(m, a, b, query<T>(Level::Manifold, ground_edges, ground_vertices));
     expect_up(r, T(0.6));
     EXPECT_TRUE(r.manifold.reference_is_a);
     EXPECT_EQ(r.manifold.reference_edge, 2);
@@ -162,12 +163,21 @@ TYPED_TEST(InternalEdgeMasks, DepthIsTheLeastExactOverlapAlongTheUsableEdges) {
   };
   const std::array<Vec2<double>, 3> ground_pts = {{{1, 0}, {1, -1}, {2, 0}}};
   const Case cases[] = {
-      {"vertex past a flat junction", {ground_pts, {{{1.02, -0.05}, {1.02, 1}, {0, 1}}}},
-       ground_edges, ground_vertices, {{true, 2}}},
-      {"straddling an internal edge", {ground_pts, {{{0.5, -0.6}, {1.5, -0.6}, {1, 0.5}}}},
-       ground_edges, ground_vertices, {{true, 2}, {false, 1}, {false, 2}}},
-      {"deep, only the outline", {ground_pts, {{{1.1, -0.5}, {1.3, -0.5}, {1.2, -0.3}}}},
-       ground_edges | 0b111000, ground_vertices, {{true, 2}}},
+      {"vertex past a flat junction",
+       {ground_pts, {{{1.02, -0.05}, {1.02, 1}, {0, 1}}}},
+       ground_edges,
+       ground_vertices,
+       {{true, 2}}},
+      {"straddling an internal edge",
+       {ground_pts, {{{0.5, -0.6}, {1.5, -0.6}, {1, 0.5}}}},
+       ground_edges,
+       ground_vertices,
+       {{true, 2}, {false, 1}, {false, 2}}},
+      {"deep, only the outline",
+       {ground_pts, {{{1.1, -0.5}, {1.3, -0.5}, {1.2, -0.3}}}},
+       ground_edges | 0b111000,
+       ground_vertices,
+       {{true, 2}}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

@@ -102,8 +102,8 @@ TEST(InternalEdgesRule, TheVectorKernelGivesTheGenericKernelsBits) {
         reach *= float(pair_size(p));
         for (unsigned internal = 0; internal < 8; ++internal) {
           for (unsigned closed = 0; closed < 8; closed += 3) {
-            const detail::EdgeBits generic = detail::edge_bits<float>(
-                frame.ta, frame.a, frame.b, internal, closed, reach);
+            const detail::EdgeBits generic =
+                detail::edge_bits<float>(frame.ta, frame.a, frame.b, internal, closed, reach);
             const detail::EdgeBits vector =
                 detail::edge_bits(frame.ta, frame.a, frame.b, internal, closed, reach);
             ASSERT_EQ(vector.allowed, generic.allowed);

@@ -24,7 +24,8 @@ struct Motion {
   V shift;
   V apply(const V& p) const {
     return V(std::cos(angle) * p.x() - std::sin(angle) * p.y(),
-             std::sin(angle) * p.x() + std::cos(angle) * p.y()) + shift;
+             std::sin(angle) * p.x() + std::cos(angle) * p.y()) +
+           shift;
   }
   V rotate(const V& d) const { return apply(d) - shift; }
 };
@@ -39,7 +40,8 @@ RawPair moved(const RawPair& p, const Motion& m) {
 Result<double> run(Method method, const RawPair& p) {
   const auto t = build<double>(p);
   EXPECT_TRUE(t.a.ok() && t.b.ok());
-  const Result<double> r = penetrate(method, t.a.triangle, t.b.triangle, Query<double>{Level::Depth});
+  const Result<double> r =
+      penetrate(method, t.a.triangle, t.b.triangle, Query<double>{Level::Depth});
   EXPECT_NE(r.status, Status::Invalid) << describe(r.reason);
   return r;
 }
@@ -51,7 +53,7 @@ class Invariance : public ::testing::TestWithParam<Method> {};
 TEST_P(Invariance, SeparationIsUnchangedAndNormalTurnsWithARigidMotion) {
   Random rng(2024);
   for (InputClass c : {InputClass::General, InputClass::Sliver, InputClass::Contained,
-                      InputClass::NearParallel, InputClass::Apart}) {
+                       InputClass::NearParallel, InputClass::Apart}) {
     for (const RawPair& p : make_valid_pairs(c, 300, 17)) {
       const double angle = rng.uniform(0, 6.283185307179586);
       const double dx = rng.uniform(-1000, 1000);
@@ -75,8 +77,8 @@ TEST_P(Invariance, SeparationIsUnchangedAndNormalTurnsWithARigidMotion) {
 
 TEST_P(Invariance, VertexOrderAndWindingDoNotChangeTheAnswer) {
   Random rng(99);
-  for (InputClass c : {InputClass::General, InputClass::AxisAligned, InputClass::Touching,
-                      InputClass::Far}) {
+  for (InputClass c :
+       {InputClass::General, InputClass::AxisAligned, InputClass::Touching, InputClass::Far}) {
     for (const RawPair& p : make_valid_pairs(c, 300, 23)) {
       RawPair q = p;
       std::rotate(q.a.begin(), q.a.begin() + rng.below(3), q.a.end());
@@ -89,8 +91,8 @@ TEST_P(Invariance, VertexOrderAndWindingDoNotChangeTheAnswer) {
 }
 
 TEST_P(Invariance, SwappingAAndBKeepsTheSeparationAndFlipsTheNormal) {
-  for (InputClass c : {InputClass::General, InputClass::Contained, InputClass::Apart,
-                      InputClass::Sliver}) {
+  for (InputClass c :
+       {InputClass::General, InputClass::Contained, InputClass::Apart, InputClass::Sliver}) {
     for (const RawPair& p : make_valid_pairs(c, 300, 29)) {
       const Result<double> ab = run(GetParam(), p);
       const Result<double> ba = run(GetParam(), RawPair{p.b, p.a});

@@ -30,7 +30,6 @@ using test_support::has_features;
 using test_support::tol;
 using test_support::tri;
 
-
 // Caller's vertex i of the triangle given as `t`'s CCW vertices through input_vertex.
 template <class T>
 Vec2<T> caller_vertex(const Triangle<T>& t, int caller_index) {
@@ -138,10 +137,10 @@ TYPED_TEST(LinCanny, ExactlyTouchingPairsAreTouching) {
   using T = TypeParam;
   const auto a = tri<T>(0, 0, 2, 0, 1, -1);
   const Triangle<T> touching[] = {
-      tri<T>(1, 0, 2, 1, 0, 1),          // B's vertex on A's top edge
-      tri<T>(0.5, 0, 1.5, 0, 1, 1),      // B's bottom edge on A's top edge
-      tri<T>(2, 0, 3, 1, 3, -1),         // vertex on vertex
-      tri<T>(-1, 0, 0, 0, -0.5, 1),      // end to end along one line
+      tri<T>(1, 0, 2, 1, 0, 1),      // B's vertex on A's top edge
+      tri<T>(0.5, 0, 1.5, 0, 1, 1),  // B's bottom edge on A's top edge
+      tri<T>(2, 0, 3, 1, 3, -1),     // vertex on vertex
+      tri<T>(-1, 0, 0, 0, -0.5, 1),  // end to end along one line
   };
   for (const Triangle<T>& b : touching) {
     for (Level level : {Level::Overlap, Level::Depth, Level::Contact}) {
@@ -299,8 +298,7 @@ TEST(LinCannyRandom, SeparatedDistanceEqualsSatsWithin1e12OfThePairSize) {
       const double size = pair_size(p);
       EXPECT_NEAR(r.separation, s.separation, 1e-12 * size) << name(c);
       EXPECT_NEAR((r.witness_b - r.witness_a).norm(), r.separation, world_slack(p)) << name(c);
-      EXPECT_NEAR((r.separation * r.normal - (r.witness_b - r.witness_a)).norm(), 0,
-                  world_slack(p))
+      EXPECT_NEAR((r.separation * r.normal - (r.witness_b - r.witness_a)).norm(), 0, world_slack(p))
           << name(c);
     }
   }
@@ -331,8 +329,7 @@ TEST(LinCannyRandom, DepthIsNeverBelowSatsAndIsALocalMinimumOfTheAxisCycle) {
       ++penetrating;
       // One of sat's own six overlaps, computed the same way: never smaller, not even by rounding.
       EXPECT_GE(r.depth, s.depth) << name(c);
-      EXPECT_TRUE(is_local_minimum(axis_cycle(t.a.triangle, t.b.triangle), r,
-                                   1e-12 * pair_size(p)))
+      EXPECT_TRUE(is_local_minimum(axis_cycle(t.a.triangle, t.b.triangle), r, 1e-12 * pair_size(p)))
           << name(c);
       EXPECT_NEAR((r.witness_a - r.witness_b - r.depth * r.normal).norm(), 0, world_slack(p))
           << name(c);
@@ -402,7 +399,7 @@ RawPair moved(const RawPair& p, double step, Random& rng) {
 TEST(LinCannyRandom, WarmStartTakesNoMoreIterationsAfterASmallMotion) {
   Random rng(seed);
   for (InputClass c : {InputClass::General, InputClass::Apart, InputClass::Sliver,
-                      InputClass::NearParallel, InputClass::Scale}) {
+                       InputClass::NearParallel, InputClass::Scale}) {
     long cold_total = 0;
     long warm_total = 0;
     for (const RawPair& p : make_valid_pairs(c, pairs_per_class, seed)) {

@@ -1,5 +1,5 @@
-// The registry of the library's methods (dyop/method.hpp): every tool lists methods from it, so each row
-// must be callable the way it says and spelt once.
+// The registry of the library's methods (dyop/method.hpp): every tool lists methods from it, so
+// each row must be callable the way it says and spelt once.
 #include <gtest/gtest.h>
 
 #include <set>

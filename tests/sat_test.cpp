@@ -15,8 +15,8 @@ using test_support::ScalarNames;
 using test_support::Scalars;
 TYPED_TEST_SUITE(Sat, Scalars, ScalarNames);
 
-using test_support::tol;
 using test_support::has_features;
+using test_support::tol;
 using test_support::tri;
 
 // A's bottom edge (y = 0) is pierced 0.5 deep by B's top vertex (2, 0.5).

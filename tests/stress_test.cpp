@@ -42,10 +42,10 @@ class StressPromises : public ::testing::TestWithParam<Precision> {
       r = run_stress(o, progress);
       for (const StressRecord& x : r) {
         ::testing::Test::RecordProperty(
-            what(x),
-            "max " + std::to_string(x.err_max) + ", p99 " + std::to_string(x.err_p99) +
-                ", nonfinite " + std::to_string(x.nonfinite) + ", misclassified " +
-                std::to_string(x.misclassified) + ", rejected " + std::to_string(x.rejected));
+            what(x), "max " + std::to_string(x.err_max) + ", p99 " + std::to_string(x.err_p99) +
+                         ", nonfinite " + std::to_string(x.nonfinite) + ", misclassified " +
+                         std::to_string(x.misclassified) + ", rejected " +
+                         std::to_string(x.rejected));
       }
     }
     return r;
@@ -64,7 +64,8 @@ TEST_P(StressPromises, SatDyopAndBatchAreExactInEveryCategory) {
 
 TEST_P(StressPromises, NoMethodGivesNaNOrInfOnValidInput) {
   for (const StressRecord& r : records(GetParam())) {
-    // Box2D's own code is measured, not promised: see docs/measurements.md, "Stress: hostile input".
+    // Box2D's own code is measured, not promised: see docs/measurements.md, "Stress: hostile
+    // input".
     if (r.method == adapters::NarrowPhase::box2d()) continue;
     EXPECT_EQ(r.nonfinite, 0) << what(r);
   }
@@ -83,8 +84,7 @@ TEST_P(StressPromises, SatDyopEpaAndBatchAreInvariantUnderMotionReorderingAndSwa
   for (const StressRecord& r : records(GetParam())) {
     if (!promises_invariance(r.method)) continue;
     for (int k = 0; k < invariance_count; ++k) {
-      EXPECT_EQ(r.invariance[k], 0)
-          << what(r) << " " << name(static_cast<Invariance>(k));
+      EXPECT_EQ(r.invariance[k], 0) << what(r) << " " << name(static_cast<Invariance>(k));
     }
   }
 }
@@ -101,7 +101,8 @@ TEST_P(StressPromises, BrokenPromisesListsNothing) {
 TEST_P(StressPromises, OnlyDegenerateCategoriesHaveRejectedPairs) {
   for (const StressRecord& r : records(GetParam())) {
     const bool may_reject = r.cls == InputClass::NearlyCollinear ||
-                            (GetParam() == Precision::Float && (r.cls == InputClass::Sliver || r.cls == InputClass::Scale));
+                            (GetParam() == Precision::Float &&
+                             (r.cls == InputClass::Sliver || r.cls == InputClass::Scale));
     if (!may_reject) {
       EXPECT_EQ(r.rejected, 0) << what(r);
     }

@@ -23,10 +23,8 @@ TEST(Triangle, NonFiniteCoordinateIsRejectedByName) {
 }
 
 TEST(Triangle, RepeatedVertexIsRejectedByName) {
-  EXPECT_EQ(Triangle<double>::make(V(0, 0), V(0, 0), V(0, 1)).error,
-            TriangleError::RepeatedVertex);
-  EXPECT_EQ(Triangle<double>::make(V(0, 0), V(1, 0), V(0, 0)).error,
-            TriangleError::RepeatedVertex);
+  EXPECT_EQ(Triangle<double>::make(V(0, 0), V(0, 0), V(0, 1)).error, TriangleError::RepeatedVertex);
+  EXPECT_EQ(Triangle<double>::make(V(0, 0), V(1, 0), V(0, 0)).error, TriangleError::RepeatedVertex);
   EXPECT_NE(std::string(describe(TriangleError::RepeatedVertex)).find("repeated"),
             std::string::npos);
 }

@@ -93,9 +93,8 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
 }
 
 void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory) {
-  memory.shapes = valid_triangle(a) && valid_triangle(b)
-                      ? ContactMemory::Shapes::Triangles
-                      : ContactMemory::Shapes::InvalidTriangles;
+  memory.shapes = valid_triangle(a) && valid_triangle(b) ? ContactMemory::Shapes::Triangles
+                                                         : ContactMemory::Shapes::InvalidTriangles;
 }
 
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
@@ -121,7 +120,8 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
       memory.internal_edges = *fixed;
       masks->stamp = FoundMasks::fixed_stamp;
     } else {
-      put_off = contact && masks_put_off(setting, pair, b_in_a, memory, *masks, *contact, recycling);
+      put_off =
+          contact && masks_put_off(setting, pair, b_in_a, memory, *masks, *contact, recycling);
     }
     if (!put_off) query.internal_edges = memory.internal_edges;
   }

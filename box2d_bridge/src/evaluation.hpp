@@ -165,8 +165,7 @@ inline std::optional<Skip> skip_of(const Setting& setting, const PolygonPair& p,
 // thread's first count makes its counters: a call, with nothing else left to keep across it).
 [[gnu::always_inline]] inline bool skip(b2Manifold* manifold, const Setting& setting,
                                         const PolygonPair& p, const b2Transform& b_in_a,
-                                        const ContactMemory& memory,
-                                        ManifoldRecycling* recycling) {
+                                        const ContactMemory& memory, ManifoldRecycling* recycling) {
   const std::optional<Skip> reason = skip_of(setting, p, b_in_a, memory);
   if (!reason) return false;
   manifold->pointCount = 0;

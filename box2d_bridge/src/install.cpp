@@ -26,14 +26,14 @@ InstallResult install_setting(Backend backend, const Config& config, bool never_
   // TriangleContact::destroy. Ours read the setting at every evaluation, so they switch at the
   // next step, and take their internal-edge masks again (and drop any kept manifold) under the
   // new epoch.
-  detail::register_polygon_contact({&detail::TriangleContact::create,
-                                    &detail::TriangleContact::destroy});
+  detail::register_polygon_contact(
+      {&detail::TriangleContact::create, &detail::TriangleContact::destroy});
   const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
   now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
   now.setting.never_recompute = never_recompute;
   reset_stats();
-  return {InstallStatus::Done, never_recompute ? "installed (never recomputing: measurement only)"
-                                               : "installed"};
+  return {InstallStatus::Done,
+          never_recompute ? "installed (never recomputing: measurement only)" : "installed"};
 }
 
 }  // namespace

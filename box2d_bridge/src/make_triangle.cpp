@@ -24,8 +24,10 @@ TriangleShape failure(ShapeError e, TriangleError t = TriangleError::None) {
 
 const char* describe(ShapeError e) {
   switch (e) {
-    case ShapeError::None: return "valid triangle";
-    case ShapeError::Triangle: return "not a valid triangle (see triangle_error)";
+    case ShapeError::None:
+      return "valid triangle";
+    case ShapeError::Triangle:
+      return "not a valid triangle (see triangle_error)";
     case ShapeError::VerticesTooClose:
       return "two vertices closer than 0.5 * b2_linearSlop (Box2D would weld them and assert)";
     case ShapeError::AreaTooSmall:
@@ -38,9 +40,8 @@ const char* describe(ShapeError e) {
 }
 
 TriangleShape make_triangle(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2) {
-  const TriangleOrError<float> t =
-      Triangle<float>::make(Vec2<float>(p0.x, p0.y), Vec2<float>(p1.x, p1.y),
-                            Vec2<float>(p2.x, p2.y));
+  const TriangleOrError<float> t = Triangle<float>::make(
+      Vec2<float>(p0.x, p0.y), Vec2<float>(p1.x, p1.y), Vec2<float>(p2.x, p2.y));
   if (!t.ok()) return failure(ShapeError::Triangle, t.error);
   for (const b2Vec2& p : {p0, p1, p2}) {
     if (!(std::abs(p.x) <= max_triangle_coordinate && std::abs(p.y) <= max_triangle_coordinate)) {

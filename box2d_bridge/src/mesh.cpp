@@ -19,18 +19,22 @@ MeshResult refused(MeshError e, int triangle = -1) {
 
 const char* describe(MeshError e) {
   switch (e) {
-    case MeshError::None: return "mesh added";
-    case MeshError::WorldLocked: return "the world is stepping: add the mesh between steps";
+    case MeshError::None:
+      return "mesh added";
+    case MeshError::WorldLocked:
+      return "the world is stepping: add the mesh between steps";
     case MeshError::IndexCount:
       return "the index count is not a positive multiple of 3 (or a count is negative)";
-    case MeshError::IndexOutOfRange: return "a vertex index outside [0, vertex_count)";
-    case MeshError::Triangle: return "a triangle Box2D cannot take (see shape_error)";
+    case MeshError::IndexOutOfRange:
+      return "a vertex index outside [0, vertex_count)";
+    case MeshError::Triangle:
+      return "a triangle Box2D cannot take (see shape_error)";
   }
   return "unknown mesh error";
 }
 
-MeshResult add_triangles(b2Body& body, const b2Vec2* vertices, int vertex_count,
-                         const int* indices, int index_count, const b2FixtureDef& def) {
+MeshResult add_triangles(b2Body& body, const b2Vec2* vertices, int vertex_count, const int* indices,
+                         int index_count, const b2FixtureDef& def) {
   if (body.GetWorld()->IsLocked()) return refused(MeshError::WorldLocked);
   if (vertex_count < 0 || index_count <= 0 || index_count % 3 != 0 || !indices) {
     return refused(MeshError::IndexCount);

@@ -47,8 +47,8 @@ constexpr float static_pair_share = 0.2f;
 
 // What a world's contact remembers of the manifold it keeps: 24 bytes.
 struct ManifoldRecycling {
-  b2Rot q;                 // B's body frame in A's when the manifold was computed: rotation
-  b2Vec2 centroid{0, 0};   // ... and B's centroid then, in A's frame (b2MulT(xf_a, xf_b) applied)
+  b2Rot q;                // B's body frame in A's when the manifold was computed: rotation
+  b2Vec2 centroid{0, 0};  // ... and B's centroid then, in A's frame (b2MulT(xf_a, xf_b) applied)
   // How far (motion, metres) the pose may move before a recompute; 0: never; below 0: an
   // evaluation since was skipped (`lose_pose`), so the pose is not the pair's last.
   float slack = 0;

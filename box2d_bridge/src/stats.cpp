@@ -69,8 +69,10 @@ ThreadCounters::~ThreadCounters() {
 
 const char* name(Skip s) {
   switch (s) {
-    case Skip::Bounds: return "bounds";
-    case Skip::WarmAxis: return "warm-axis";
+    case Skip::Bounds:
+      return "bounds";
+    case Skip::WarmAxis:
+      return "warm-axis";
   }
   return "unknown";
 }

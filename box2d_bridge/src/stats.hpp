@@ -18,8 +18,9 @@ namespace dyop::box2d::detail {
 // One counter written by one thread, read by any.
 class Counter {
  public:
-  void add(std::uint64_t n = 1) { value_.store(value_.load(std::memory_order_relaxed) + n,
-                                               std::memory_order_relaxed); }
+  void add(std::uint64_t n = 1) {
+    value_.store(value_.load(std::memory_order_relaxed) + n, std::memory_order_relaxed);
+  }
   std::uint64_t get() const { return value_.load(std::memory_order_relaxed); }
   void clear() { value_.store(0, std::memory_order_relaxed); }
 
@@ -41,7 +42,7 @@ struct ThreadCounters {
   Counter internal_edge_pairs;
   Counter recycled;
 
-  ThreadCounters();  // registers the block (see stats.cpp)
+  ThreadCounters();   // registers the block (see stats.cpp)
   ~ThreadCounters();  // adds it to the ended threads' totals and unregisters it
   ThreadCounters(const ThreadCounters&) = delete;
   ThreadCounters& operator=(const ThreadCounters&) = delete;

@@ -175,18 +175,19 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   // A fixture's fixed edge data first (`fix_internal_edges`): nothing to find.
   std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
   std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
-  if (!(a && b)) for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-    if (&c == this || c.masks_.stamp != stamp || !c.masks_.settled() ||
-        c.masks_.fixtures != fixtures) {
-      return true;
-    }
-    const InternalEdges m = c.memory_.internal_edges;
-    if (!a && c.m_fixtureA == m_fixtureA) a = half(m, false);
-    if (!a && c.m_fixtureB == m_fixtureA) a = half(m, true);
-    if (!b && c.m_fixtureA == m_fixtureB) b = half(m, false);
-    if (!b && c.m_fixtureB == m_fixtureB) b = half(m, true);
-    return !(a && b);
-  });
+  if (!(a && b))
+    for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
+      if (&c == this || c.masks_.stamp != stamp || !c.masks_.settled() ||
+          c.masks_.fixtures != fixtures) {
+        return true;
+      }
+      const InternalEdges m = c.memory_.internal_edges;
+      if (!a && c.m_fixtureA == m_fixtureA) a = half(m, false);
+      if (!a && c.m_fixtureB == m_fixtureA) a = half(m, true);
+      if (!b && c.m_fixtureA == m_fixtureB) b = half(m, false);
+      if (!b && c.m_fixtureB == m_fixtureB) b = half(m, true);
+      return !(a && b);
+    });
   if (!a) a = half_from_body(*m_fixtureA, epoch);
   if (!b) b = half_from_body(*m_fixtureB, epoch);
   return InternalEdges::pair(a ? *a : triangle_internal_edges(*m_fixtureA),
@@ -225,8 +226,7 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
   skip_or_answer(manifold, xf_a, xf_b);
 }
 
-[[gnu::noinline]] void TriangleContact::keep_or_go_on(b2Manifold* manifold,
-                                                      const b2Transform& xf_a,
+[[gnu::noinline]] void TriangleContact::keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a,
                                                       const b2Transform& xf_b) {
   if (detail::keep(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this,
                    &masks_)) {
@@ -252,17 +252,15 @@ PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf
 }
 
 [[gnu::noinline]] void TriangleContact::answer(b2Manifold* manifold, const b2Transform& xf_a,
-                                               const b2Transform& xf_b,
-                                               const b2Transform& b_in_a) {
-  detail::answer(manifold, installation().setting, pair(xf_a, xf_b), b_in_a, memory_, this,
-                 &masks_, &recycling_);
+                                               const b2Transform& xf_b, const b2Transform& b_in_a) {
+  detail::answer(manifold, installation().setting, pair(xf_a, xf_b), b_in_a, memory_, this, &masks_,
+                 &recycling_);
 }
 
 [[gnu::noinline, gnu::cold]] void TriangleContact::evaluate_cold(b2Manifold* manifold,
                                                                  const b2Transform& xf_a,
                                                                  const b2Transform& xf_b) {
-  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &masks_,
-           &recycling_);
+  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &masks_, &recycling_);
 }
 
 void TriangleContact::fresh_manifold(b2Manifold* manifold) const {
@@ -291,10 +289,9 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
     ours->fresh_manifold(manifold);
     return;
   }
-  b2CollidePolygons(manifold, static_cast<const b2PolygonShape*>(fa->GetShape()),
-                    fa->GetBody()->GetTransform(),
-                    static_cast<const b2PolygonShape*>(fb->GetShape()),
-                    fb->GetBody()->GetTransform());
+  b2CollidePolygons(
+      manifold, static_cast<const b2PolygonShape*>(fa->GetShape()), fa->GetBody()->GetTransform(),
+      static_cast<const b2PolygonShape*>(fb->GetShape()), fb->GetBody()->GetTransform());
 }
 
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {

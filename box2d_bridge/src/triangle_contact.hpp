@@ -40,8 +40,8 @@ inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
 class TriangleContact final : public b2Contact {
  public:
   // Box2D's create / destroy functions for the registry (b2ContactCreateFcn / b2ContactDestroyFcn).
-  static b2Contact* create(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b,
-                           int32 index_b, b2BlockAllocator* allocator);
+  static b2Contact* create(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int32 index_b,
+                           b2BlockAllocator* allocator);
   // Frees any polygon contact as what it is: ours here, Box2D's own through Box2D's own function.
   static void destroy(b2Contact* contact, b2BlockAllocator* allocator);
 
@@ -51,10 +51,10 @@ class TriangleContact final : public b2Contact {
   static TriangleContact* ours(b2Contact* c);
 
   // What its internal-edge masks would be found under now (`FoundMasks::stamp`): install `epoch`
-  // and the frames of its static bodies, never 0 nor `FoundMasks::fixed_stamp`. Why a static body's frame:
-  // static bodies share edges with each other, so moving one (`SetTransform`) or making it static
-  // or not (`SetType`) changes its triangles' masks, and nothing else in the world records a move
-  // within the broad phase's margin. Folded with the install so that a change of either gives
+  // and the frames of its static bodies, never 0 nor `FoundMasks::fixed_stamp`. Why a static body's
+  // frame: static bodies share edges with each other, so moving one (`SetTransform`) or making it
+  // static or not (`SetType`) changes its triangles' masks, and nothing else in the world records a
+  // move within the broad phase's margin. Folded with the install so that a change of either gives
   // another stamp (short of a 16-bit collision). Inline: every evaluation with the rule on that
   // keeps a manifold or answers afresh asks.
   std::uint16_t internal_edges_stamp(std::uint8_t epoch) const {
@@ -66,11 +66,11 @@ class TriangleContact final : public b2Contact {
     return stamp != FoundMasks::fixed_stamp ? stamp : FoundMasks::fixed_stamp - 1;
   }
 
-  // The world's count of fixture proxies, its low 16 bits (`FoundMasks::fixtures`). Why: it is the world's own and moves whenever a fixture of the
-  // world is created or destroyed (a fixture added next to a triangle, or one taken away from
-  // under a body resting elsewhere on its neighbour, changes that neighbour's masks), in O(1). A
-  // change far from a pair matters only once the pair has moved toward it: from then on the pair
-  // follows its motion (`FoundMasks::motion`).
+  // The world's count of fixture proxies, its low 16 bits (`FoundMasks::fixtures`). Why: it is the
+  // world's own and moves whenever a fixture of the world is created or destroyed (a fixture added
+  // next to a triangle, or one taken away from under a body resting elsewhere on its neighbour,
+  // changes that neighbour's masks), in O(1). A change far from a pair matters only once the pair
+  // has moved toward it: from then on the pair follows its motion (`FoundMasks::motion`).
   std::uint16_t world_fixtures() const {
     return static_cast<std::uint16_t>(
         m_fixtureA->GetBody()->GetWorld()->GetContactManager().m_broadPhase.GetProxyCount());

@@ -36,8 +36,7 @@ void penetrate_batch_avx2(const BatchView<double>& v, const BatchLimits<double>&
 #if DYOP_HAVE_BATCH_AVX512
 // batch_avx512.cpp, compiled with -mavx512f -mavx512dq: called only when the CPU has both.
 void penetrate_batch_avx512(const BatchView<float>& v, const BatchLimits<float>& lim, bool depth);
-void penetrate_batch_avx512(const BatchView<double>& v, const BatchLimits<double>& lim,
-                            bool depth);
+void penetrate_batch_avx512(const BatchView<double>& v, const BatchLimits<double>& lim, bool depth);
 #endif
 
 namespace {
@@ -132,12 +131,18 @@ template <class T>
 void run(BatchKernel kernel, const BatchView<T>& v, const BatchLimits<T>& lim, bool depth) {
   switch (kernel) {
 #if DYOP_HAVE_BATCH_AVX512
-    case BatchKernel::Avx512: penetrate_batch_avx512(v, lim, depth); return;
+    case BatchKernel::Avx512:
+      penetrate_batch_avx512(v, lim, depth);
+      return;
 #endif
 #if DYOP_HAVE_BATCH_AVX2
-    case BatchKernel::Avx2: penetrate_batch_avx2(v, lim, depth); return;
+    case BatchKernel::Avx2:
+      penetrate_batch_avx2(v, lim, depth);
+      return;
 #endif
-    default: run_batch<PortableLanes<T>>(v, lim, depth); return;
+    default:
+      run_batch<PortableLanes<T>>(v, lim, depth);
+      return;
   }
 }
 
@@ -163,9 +168,12 @@ template void penetrate_row_portable(const BatchView<double>&, const BatchLimits
 bool batch_kernel_available(BatchKernel kernel) {
   switch (kernel) {
     case BatchKernel::Auto:
-    case BatchKernel::Portable: return true;
-    case BatchKernel::Avx2: return detail::cpu_has_avx2_fma();
-    case BatchKernel::Avx512: return detail::cpu_has_avx512();
+    case BatchKernel::Portable:
+      return true;
+    case BatchKernel::Avx2:
+      return detail::cpu_has_avx2_fma();
+    case BatchKernel::Avx512:
+      return detail::cpu_has_avx512();
   }
   return false;
 }
@@ -179,17 +187,22 @@ BatchKernel batch_kernel_used(BatchKernel requested) {
 
 const char* name(BatchKernel kernel) {
   switch (kernel) {
-    case BatchKernel::Auto: return "auto";
-    case BatchKernel::Portable: return "portable";
-    case BatchKernel::Avx2: return "avx2";
-    case BatchKernel::Avx512: return "avx512";
+    case BatchKernel::Auto:
+      return "auto";
+    case BatchKernel::Portable:
+      return "portable";
+    case BatchKernel::Avx2:
+      return "avx2";
+    case BatchKernel::Avx512:
+      return "avx512";
   }
   return "unknown";
 }
 
 const char* describe(BatchError e) {
   switch (e) {
-    case BatchError::None: return "no error";
+    case BatchError::None:
+      return "no error";
     case BatchError::UnsupportedLevel:
       return "unsupported level: the batch kernel computes Overlap and Depth only (use sat for "
              "Contact or Manifold)";

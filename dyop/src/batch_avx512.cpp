@@ -129,8 +129,7 @@ struct Double8 {
 
 }  // namespace
 
-void penetrate_batch_avx512(const BatchView<float>& v, const BatchLimits<float>& lim,
-                            bool depth) {
+void penetrate_batch_avx512(const BatchView<float>& v, const BatchLimits<float>& lim, bool depth) {
   run_batch<Float16>(v, lim, depth);
 }
 

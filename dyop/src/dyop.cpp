@@ -90,8 +90,8 @@ Result<T> dyop_fast(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& 
   b_into_a.overlap = -a.normal(edge_a).dot(f.b[b_into_a.deep] - f.a[edge_a]);
   const bool b_inside = strictly_inside(a, f.a, f.b[b_into_a.deep]);
 
-  return detail::answer_from_axis(
-      f, query, detail::choose_direction(a_into_b, a_inside, b_into_a, b_inside));
+  return detail::answer_from_axis(f, query,
+                                  detail::choose_direction(a_into_b, a_inside, b_into_a, b_inside));
 }
 
 template Result<float> dyop(const Triangle<float>&, const Triangle<float>&, const Query<float>&);

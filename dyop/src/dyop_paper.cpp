@@ -27,9 +27,9 @@ PaperLinesOrError<T> paper_lines(const Vec2<T>& p, const Vec2<T>& q, const Vec2<
     return out;
   }
   PaperLines<T>& l = out.lines;
-  l.m = (p.y() - q.y()) / (p.x() - q.x());                  // eq. 3
-  l.c = p.y() - l.m * p.x();                                // eq. 4
-  l.c_vertex = x.y() - l.m * x.x();                         // eq. 5
+  l.m = (p.y() - q.y()) / (p.x() - q.x());  // eq. 3
+  l.c = p.y() - l.m * p.x();                // eq. 4
+  l.c_vertex = x.y() - l.m * x.x();         // eq. 5
   const T dc = std::abs(l.c_vertex - l.c);
   l.depth_eq8 = l.m == 0 ? l.c - l.c_vertex : dc / p_norm;  // eq. 7, eq. 8
   l.true_distance = dc / std::sqrt(1 + l.m * l.m);

@@ -4,7 +4,8 @@
 //      the origin; it ends with the distance (origin outside) or a triangle enclosing the origin.
 //   2. EPA: from that polygon (completed to positive area when GJK stopped on a point or a
 //      segment), split the edge closest to the origin at the support point along its normal, until
-//      the support lies no farther than `epa_tolerance` beyond it; that edge gives depth and normal.
+//      the support lies no farther than `epa_tolerance` beyond it; that edge gives depth and
+//      normal.
 //   Invariants: the polygon stays convex and counter-clockwise; edges are differences of like
 //   vertices, so a sliver's edge keeps an accurate direction; at most epa_max_iterations each.
 
@@ -40,8 +41,14 @@ Support<T> support(const PairFrame<T>& f, const Vec2<T>& d) {
   for (int i = 1; i < 3; ++i) {
     const T da = d.dot(f.a[i]);
     const T db = d.dot(f.b[i]);
-    if (da > most_a) { most_a = da; s.ia = i; }
-    if (db < least_b) { least_b = db; s.ib = i; }
+    if (da > most_a) {
+      most_a = da;
+      s.ia = i;
+    }
+    if (db < least_b) {
+      least_b = db;
+      s.ib = i;
+    }
   }
   s.w = f.a[s.ia] - f.b[s.ib];
   return s;
@@ -191,8 +198,14 @@ bool expand(const PairFrame<T>& f, Polygon<T>& poly, int e, const Support<T>& w)
   int first = e;
   int last = e;
   int visible = 1;
-  while (visible < poly.n - 1 && sees(poly.prev(first))) { first = poly.prev(first); ++visible; }
-  while (visible < poly.n - 1 && sees(poly.next(last))) { last = poly.next(last); ++visible; }
+  while (visible < poly.n - 1 && sees(poly.prev(first))) {
+    first = poly.prev(first);
+    ++visible;
+  }
+  while (visible < poly.n - 1 && sees(poly.next(last))) {
+    last = poly.next(last);
+    ++visible;
+  }
   // Rebuilt from the end of the visible chain round to its start, then `w`: the kept vertices'
   // edges are unchanged but for the two that now meet `w`.
   Polygon<T> out;
@@ -255,7 +268,10 @@ int nearest_axis(const PairFrame<T>& f, const Vec2<T>& n) {
   T best_chord = (f.axis(0) - n).squaredNorm();
   for (int k = 1; k < 6; ++k) {
     const T chord = (f.axis(k) - n).squaredNorm();
-    if (chord < best_chord) { best_chord = chord; best = k; }
+    if (chord < best_chord) {
+      best_chord = chord;
+      best = k;
+    }
   }
   return best;
 }
@@ -270,8 +286,7 @@ Feature simplex_feature(const Triangle<T>& t, int i0, int i1) {
 // GJK ended with the origin farther than the touching band from A − B: the distance, normal,
 // witnesses and features come from the simplex (a vertex or an edge of A − B).
 template <class T>
-void answer_separated(const PairFrame<T>& f, const Query<T>& q, const Simplex<T>& s,
-                      Result<T>& r) {
+void answer_separated(const PairFrame<T>& f, const Query<T>& q, const Simplex<T>& s, Result<T>& r) {
   const Support<T>& p = s.p[0];
   if (s.n == 1) {
     r.separation = p.w.norm();
@@ -373,7 +388,6 @@ Result<T> epa(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query)
 }
 
 template Result<float> epa(const Triangle<float>&, const Triangle<float>&, const Query<float>&);
-template Result<double> epa(const Triangle<double>&, const Triangle<double>&,
-                            const Query<double>&);
+template Result<double> epa(const Triangle<double>&, const Triangle<double>&, const Query<double>&);
 
 }  // namespace dyop

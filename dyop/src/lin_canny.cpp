@@ -27,8 +27,8 @@ namespace {
 
 using detail::AxisOverlap;
 using detail::Closest;
-using detail::PairFrame;
 using detail::next3;
+using detail::PairFrame;
 
 inline int prev3(int i) { return i == 0 ? 2 : i - 1; }
 
@@ -90,7 +90,7 @@ int leaves_vertex_region(const Side<T>& x, int i, const Vec2<T>& q) {
 template <class T>
 int turns_from_vertex(const Side<T>& x, int i, const Vec2<T>& d) {
   const int p = prev3(i);
-  const T out = cross(x.t.normal(i), d);  // > 0: moving along edge i gains on d
+  const T out = cross(x.t.normal(i), d);    // > 0: moving along edge i gains on d
   const T back = -cross(x.t.normal(p), d);  // > 0: moving back along edge p gains on d
   if (out > 0 && out >= back) return i;
   return back > 0 ? p : -1;
@@ -112,7 +112,7 @@ struct FeatureWalk {
   Closest<T> last;
   Closest<T> best;  // least-distance candidate seen: the answer if the cycling guard trips
   bool has_best = false;
-  T inside = 0;     // > 0: a vertex is this deep inside the other triangle, a lower bound on depth
+  T inside = 0;  // > 0: a vertex is this deep inside the other triangle, a lower bound on depth
 
   void offer(const Closest<T>& c) {
     if (!has_best || c.distance < best.distance) best = c;
@@ -396,9 +396,9 @@ Result<T> lin_canny(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& 
                     LinCannyCache* cache) {
   const detail::PairFrame<T> f(a, b);
   const bool warm = cache != nullptr && usable(*cache);
-  const FeaturePair start = warm ? FeaturePair{{cache->type_a, cache->index_a},
-                                               {cache->type_b, cache->index_b}}
-                                 : FeaturePair{vertex(0), vertex(0)};
+  const FeaturePair start =
+      warm ? FeaturePair{{cache->type_a, cache->index_a}, {cache->type_b, cache->index_b}}
+           : FeaturePair{vertex(0), vertex(0)};
   const WalkEnd<T> w = feature_walk(f, start);
 
   Result<T> r;

@@ -4,18 +4,24 @@ namespace dyop {
 
 const char* name(Level level) {
   switch (level) {
-    case Level::Overlap: return "overlap";
-    case Level::Depth: return "depth";
-    case Level::Contact: return "contact";
-    case Level::Manifold: return "manifold";
+    case Level::Overlap:
+      return "overlap";
+    case Level::Depth:
+      return "depth";
+    case Level::Contact:
+      return "contact";
+    case Level::Manifold:
+      return "manifold";
   }
   return "unknown";
 }
 
 const char* describe(InvalidReason r) {
   switch (r) {
-    case InvalidReason::None: return "no reason: the result is not Invalid";
-    case InvalidReason::NotPairMethod: return "not a per-pair method: see dyop::pair_methods";
+    case InvalidReason::None:
+      return "no reason: the result is not Invalid";
+    case InvalidReason::NotPairMethod:
+      return "not a per-pair method: see dyop::pair_methods";
     case InvalidReason::PaperVerticalEdge:
       return "vertical edge: slope-intercept form (paper eq. 3) has no slope";
     case InvalidReason::PaperVertexAtOrigin:

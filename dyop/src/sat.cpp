@@ -17,7 +17,6 @@ Result<T> sat(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query)
 }
 
 template Result<float> sat(const Triangle<float>&, const Triangle<float>&, const Query<float>&);
-template Result<double> sat(const Triangle<double>&, const Triangle<double>&,
-                            const Query<double>&);
+template Result<double> sat(const Triangle<double>&, const Triangle<double>&, const Query<double>&);
 
 }  // namespace dyop

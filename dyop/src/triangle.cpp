@@ -7,13 +7,16 @@ namespace dyop {
 
 const char* describe(TriangleError e) {
   switch (e) {
-    case TriangleError::None: return "valid triangle";
-    case TriangleError::NonFinite: return "non-finite coordinate (NaN or infinity)";
+    case TriangleError::None:
+      return "valid triangle";
+    case TriangleError::NonFinite:
+      return "non-finite coordinate (NaN or infinity)";
     case TriangleError::TooLarge:
       return "coordinate too large (beyond max_coordinate: squared lengths would overflow)";
     case TriangleError::TooSmall:
       return "triangle too small (longest edge below min_size: squared lengths would underflow)";
-    case TriangleError::RepeatedVertex: return "repeated vertex (two vertices are equal)";
+    case TriangleError::RepeatedVertex:
+      return "repeated vertex (two vertices are equal)";
     case TriangleError::Degenerate:
       return "degenerate triangle (vertices collinear within the flatness tolerance)";
   }

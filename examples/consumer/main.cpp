@@ -40,8 +40,9 @@ bool world_rests() {
     return false;
   }
   b2World world(b2Vec2(0.0f, -10.0f));
-  const b2Body* ground = triangle_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f),
-                                       {b2Vec2(-5.0f, -2.0f), b2Vec2(5.0f, 0.0f), b2Vec2(-5.0f, 0.0f)});
+  const b2Body* ground =
+      triangle_body(world, b2_staticBody, b2Vec2(0.0f, 0.0f),
+                    {b2Vec2(-5.0f, -2.0f), b2Vec2(5.0f, 0.0f), b2Vec2(-5.0f, 0.0f)});
   const b2Body* body = triangle_body(world, b2_dynamicBody, b2Vec2(0.3f, 0.5f),
                                      {b2Vec2(-0.5f, 0.0f), b2Vec2(0.5f, 0.0f), b2Vec2(0.0f, 0.8f)});
   if (ground == nullptr || body == nullptr) return false;
@@ -51,9 +52,10 @@ bool world_rests() {
   const float height = body->GetPosition().y;
   const std::uint64_t manifolds = dyop::box2d::stats().manifolds;
   const bool rests = height > 0.0f && height < 0.04f && manifolds > 0;
-  std::printf("world: triangle at rest %.4f m above the triangle ground, %llu manifolds from the "
-              "plug-in: %s\n",
-              height, static_cast<unsigned long long>(manifolds), rests ? "ok" : "WRONG");
+  std::printf(
+      "world: triangle at rest %.4f m above the triangle ground, %llu manifolds from the "
+      "plug-in: %s\n",
+      height, static_cast<unsigned long long>(manifolds), rests ? "ok" : "WRONG");
   return rests;
 }
 

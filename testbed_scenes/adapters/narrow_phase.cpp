@@ -30,17 +30,14 @@ bool has(const NarrowPhase& p, Level level) {
   return p.method ? info(p.method->method).has(level) : level == Level::Manifold;
 }
 
-bool runs_double(const NarrowPhase& p) {
-  return p.method && info(p.method->method).runs_double();
-}
+bool runs_double(const NarrowPhase& p) { return p.method && info(p.method->method).runs_double(); }
 
 bool built(const NarrowPhase& p) { return p.method || kBox2DBuilt; }
 
 std::vector<NarrowPhase> narrow_phases(RowFilter keep, bool with_box2d) {
   std::vector<NarrowPhase> out;
-  for (const Variant& v : variants([&](const MethodInfo& row) {
-         return keep == nullptr || keep(row);
-       })) {
+  for (const Variant& v :
+       variants([&](const MethodInfo& row) { return keep == nullptr || keep(row); })) {
     out.push_back({v});
   }
   if (with_box2d && kBox2DBuilt) out.push_back(NarrowPhase::box2d());

@@ -59,7 +59,8 @@ bool runs_double(const NarrowPhase& p);
 bool built(const NarrowPhase& p);
 
 /// Every narrow phase of this build: the variants of the registry rows `keep` keeps (every row
-/// when nullptr; registry order, cold before warm), then Box2D's `b2CollidePolygons` when `with_box2d` and built.
+/// when nullptr; registry order, cold before warm), then Box2D's `b2CollidePolygons` when
+/// `with_box2d` and built.
 std::vector<NarrowPhase> narrow_phases(RowFilter keep, bool with_box2d);
 
 /// The narrow phase spelt `s` (a method's `name`, run cold, or "box2d" when built), or nothing.

@@ -21,8 +21,10 @@ Result<float> box2d_pair(const Triangle<float>& a, const Triangle<float>& b, con
 template <class T>
 PairFunction<T> pair_function(const NarrowPhase& p) {
   switch (call_of(p)) {
-    case Call::PerPair: return info(p.method->method).run<T>();
-    case Call::Batch: return nullptr;
+    case Call::PerPair:
+      return info(p.method->method).run<T>();
+    case Call::Batch:
+      return nullptr;
     case Call::Box2D:
 #ifdef DYOP_WITH_BOX2D
       if constexpr (std::is_same_v<T, float>) return &box2d_pair;

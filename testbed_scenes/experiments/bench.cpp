@@ -60,7 +60,8 @@ void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, Ben
     const double exact_depth = std::max(0.0, -ref.separation[k]);
     errors.push_back(std::abs(depth - exact_depth) / size);
     if (exact_penetrating && got[k].status == Status::Penetrating && exact_depth > 1e-6 * size) {
-      const double c = std::clamp(got[k].normal.template cast<double>().dot(ref.normal[k]), -1.0, 1.0);
+      const double c =
+          std::clamp(got[k].normal.template cast<double>().dot(ref.normal[k]), -1.0, 1.0);
       const double angle = std::acos(c);
       rec.normal_err_max = std::max(rec.normal_err_max, angle);
       angle_sum += angle;
@@ -85,8 +86,7 @@ void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, Ben
 template <class T>
 void run_precision(const BenchOptions& options, workloads::InputClass c,
                    std::map<workloads::InputClass, double>& box2d_ns,
-                   std::vector<BenchRecord>& records,
-                   std::ostream& progress) {
+                   std::vector<BenchRecord>& records, std::ostream& progress) {
   constexpr bool is_float = std::is_same_v<T, float>;
   const workloads::Precision precision =
       is_float ? workloads::Precision::Float : workloads::Precision::Double;

@@ -20,8 +20,8 @@
 namespace dyop::experiments {
 
 struct BenchOptions {
-  bool quick = false;   ///< fewer timed passes of ≥ 20 ms (5 instead of 21)
-  int pairs = 8192;     ///< distinct pairs per class whose answers are checked against exact ones
+  bool quick = false;  ///< fewer timed passes of ≥ 20 ms (5 instead of 21)
+  int pairs = 8192;    ///< distinct pairs per class whose answers are checked against exact ones
   /// Distinct pairs per class timed (seeded alike: the checked pairs are its first ones). More
   /// than a branch predictor learns: one AMD EPYC (AVX-512) host learned the outcomes of a method's
   /// branches over a repeated set of 8192 random pairs and timed `dyop` Depth at 23 ns where
@@ -32,21 +32,21 @@ struct BenchOptions {
 /// One line of the report.
 struct BenchRecord {
   adapters::NarrowPhase method;  ///< what ran (`adapters::name`: "batch", "lin-canny-warm", ...)
-  workloads::InputClass cls = workloads::InputClass::General;  ///< the pairs' class
-  Level level = Level::Depth;                                   ///< the query level timed
+  workloads::InputClass cls = workloads::InputClass::General;    ///< the pairs' class
+  Level level = Level::Depth;                                    ///< the query level timed
   workloads::Precision precision = workloads::Precision::Float;  ///< the scalar it ran in
-  int pairs = 0;          ///< pairs checked (`BenchOptions::pairs`)
-  int timed_pairs = 0;    ///< pairs timed (`BenchOptions::timing_pairs`)
-  double ns_per_pair = 0;       ///< median over the timed passes
-  double ratio_vs_box2d = 0;    ///< ns_per_pair / box2d's (same class, float, manifold)
-  double err_max = 0;           ///< max |depth error| / pair size
-  double err_mean = 0;          ///< mean of the same
-  double err_p99 = 0;           ///< 99th percentile of the same
-  double exact_fraction = 0;    ///< fraction of pairs with |depth error| / size ≤ 1e-9
-  double normal_err_max = 0;    ///< max angle (rad) to sat's normal on pairs both call penetrating
-  double normal_err_mean = 0;   ///< mean of the same
-  int misclassified = 0;        ///< penetrating vs not, against the exact sign, outside the band
-  int invalid = 0;              ///< pairs it answered Invalid (left out of the errors)
+  int pairs = 0;               ///< pairs checked (`BenchOptions::pairs`)
+  int timed_pairs = 0;         ///< pairs timed (`BenchOptions::timing_pairs`)
+  double ns_per_pair = 0;      ///< median over the timed passes
+  double ratio_vs_box2d = 0;   ///< ns_per_pair / box2d's (same class, float, manifold)
+  double err_max = 0;          ///< max |depth error| / pair size
+  double err_mean = 0;         ///< mean of the same
+  double err_p99 = 0;          ///< 99th percentile of the same
+  double exact_fraction = 0;   ///< fraction of pairs with |depth error| / size ≤ 1e-9
+  double normal_err_max = 0;   ///< max angle (rad) to sat's normal on pairs both call penetrating
+  double normal_err_mean = 0;  ///< mean of the same
+  int misclassified = 0;       ///< penetrating vs not, against the exact sign, outside the band
+  int invalid = 0;             ///< pairs it answered Invalid (left out of the errors)
 };
 
 /// Runs everything; one progress line per narrow phase and class on `progress`.

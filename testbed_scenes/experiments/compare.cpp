@@ -91,7 +91,7 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
       scenes::Drawing final_state;
       const bool snapshot = b == box2d::Backend::Dyop;
       run.rows.push_back(scenes::run_scene(s->name, b, steps, options.seed, options.skips,
-                                   snapshot ? &final_state : nullptr));
+                                           snapshot ? &final_state : nullptr));
       if (snapshot) run.snapshots.emplace_back(s->name, std::move(final_state));
       ++done;
       progress << '[' << done << '/' << total << "] " << s->name << " / " << box2d::name(b) << ", "

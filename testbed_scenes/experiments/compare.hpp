@@ -98,8 +98,10 @@ bool skips_keep_the_answer(const scenes::Runner& runner);
 /// What the main run produced.
 struct CompareRun {
   CompareOptions options;
-  std::vector<scenes::SceneMetrics> rows;  ///< scene by scene, backends in `box2d::all_backends` order
-  std::vector<std::pair<std::string, scenes::Drawing>> snapshots;  ///< per scene: `dyop`'s final state
+  std::vector<scenes::SceneMetrics>
+      rows;  ///< scene by scene, backends in `box2d::all_backends` order
+  std::vector<std::pair<std::string, scenes::Drawing>>
+      snapshots;  ///< per scene: `dyop`'s final state
 };
 
 /// The scenes `options` selects, in catalogue order.

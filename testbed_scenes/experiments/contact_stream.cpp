@@ -50,8 +50,9 @@ void agree(const b2Manifold& got, const b2Manifold& ref, const StreamContact& c,
   if (got.pointCount == ref.pointCount) ++out.same_point_count;
   if (got.pointCount == 0 || ref.pointCount == 0) return;
   ++out.both_points;
-  if (got.type == ref.type && reference_edge(got, c.shape_a, c.shape_b) ==
-                                 reference_edge(ref, c.shape_a, c.shape_b)) ++out.same_face;
+  if (got.type == ref.type &&
+      reference_edge(got, c.shape_a, c.shape_b) == reference_edge(ref, c.shape_a, c.shape_b))
+    ++out.same_face;
   b2WorldManifold wg, wr;
   wg.Initialize(&got, call.xf_a, c.shape_a.m_radius, call.xf_b, c.shape_b.m_radius);
   wr.Initialize(&ref, call.xf_a, c.shape_a.m_radius, call.xf_b, c.shape_b.m_radius);
@@ -184,7 +185,8 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
 
 std::uint64_t world_evaluations(std::string_view name, int steps, std::uint64_t seed) {
   checked_builder(name, steps);
-  const std::unique_ptr<scenes::Scene> scene = scenes::make_scene(name, box2d::Backend::Box2D, seed);
+  const std::unique_ptr<scenes::Scene> scene =
+      scenes::make_scene(name, box2d::Backend::Box2D, seed);
   scene->step();  // step 1 is not in the stream
   const box2d::Stats first = box2d::stats();
   for (int step = 2; step <= steps; ++step) scene->step();
@@ -263,7 +265,8 @@ StreamResult measure_stream(const ContactStream& stream, const StreamOptions& op
     }
   }
   const double base = r.runners.back().ns_per_call;
-  for (StreamRunnerResult& x : r.runners) x.ratio_vs_box2d_own = base > 0 ? x.ns_per_call / base : 0;
+  for (StreamRunnerResult& x : r.runners)
+    x.ratio_vs_box2d_own = base > 0 ? x.ns_per_call / base : 0;
   return r;
 }
 

@@ -64,11 +64,11 @@ struct StreamCall {
 
 /// A recorded stream.
 struct ContactStream {
-  std::string scene;                   ///< catalogue name
-  std::uint64_t seed = 0;              ///< the scene's seed
-  int steps = 0;                       ///< steps run (calls come from steps 2..steps)
-  std::vector<StreamContact> contacts; ///< by id
-  std::vector<StreamCall> calls;       ///< in the order the steps' `Collide` made them
+  std::string scene;                    ///< catalogue name
+  std::uint64_t seed = 0;               ///< the scene's seed
+  int steps = 0;                        ///< steps run (calls come from steps 2..steps)
+  std::vector<StreamContact> contacts;  ///< by id
+  std::vector<StreamCall> calls;        ///< in the order the steps' `Collide` made them
   /// Calls whose contact is a triangle pair.
   std::uint64_t triangle_calls() const;
 };
@@ -115,16 +115,17 @@ struct StreamRunnerResult {
 
 /// The figures of one scene's stream.
 struct StreamResult {
-  std::string scene;                  ///< catalogue name
-  int steps = 0;                      ///< steps recorded
-  std::uint64_t contacts = 0;         ///< contact lifetimes met
-  std::uint64_t calls = 0;            ///< recorded calls
-  std::uint64_t triangle_calls = 0;   ///< calls on triangle pairs
+  std::string scene;                    ///< catalogue name
+  int steps = 0;                        ///< steps recorded
+  std::uint64_t contacts = 0;           ///< contact lifetimes met
+  std::uint64_t calls = 0;              ///< recorded calls
+  std::uint64_t triangle_calls = 0;     ///< calls on triangle pairs
   std::uint64_t calls_with_points = 0;  ///< calls where `b2CollidePolygons` gives points
   /// Polygon-pair evaluations the world itself made in the same steps (`world_evaluations`): the
   /// recorded calls plus the time-of-impact re-evaluations; 0 when not counted.
   std::uint64_t world_evaluations = 0;
-  std::vector<StreamRunnerResult> runners;  ///< every backend in `all_backends` order, then box2d-own
+  std::vector<StreamRunnerResult>
+      runners;  ///< every backend in `all_backends` order, then box2d-own
 };
 
 /// What `run_streams` records and how it times the replays.

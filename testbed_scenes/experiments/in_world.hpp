@@ -25,21 +25,21 @@ namespace dyop::experiments {
 
 /// One side of an in-world comparison: medians over the repetitions.
 struct InWorldSide {
-  double narrowphase_ms = 0;  ///< `b2Profile::collide` over steps 2..N (ms)
-  double step_ms = 0;         ///< `b2World::Step` over steps 2..N (ms)
-  double solve_toi_ms = 0;    ///< `b2World::SolveTOI` over steps 2..N (ms)
-  double step_ms_median = 0;  ///< scenes::median wall time of one step (ms)
+  double narrowphase_ms = 0;          ///< `b2Profile::collide` over steps 2..N (ms)
+  double step_ms = 0;                 ///< `b2World::Step` over steps 2..N (ms)
+  double solve_toi_ms = 0;            ///< `b2World::SolveTOI` over steps 2..N (ms)
+  double step_ms_median = 0;          ///< scenes::median wall time of one step (ms)
   std::uint64_t contact_updates = 0;  ///< contact updates in steps 2..N (first repetition)
 };
 
 /// A backend against Box2D's own contact in one scene.
 struct InWorldRatio {
-  std::string scene;    ///< catalogue name, or `rain-<n>` for a scaling size
+  std::string scene;  ///< catalogue name, or `rain-<n>` for a scaling size
   box2d::Backend backend = box2d::Backend::Dyop;  ///< the plug-in's side
-  int steps = 0;        ///< steps of every run
-  int repetitions = 0;  ///< runs of each side
-  InWorldSide own;      ///< Box2D's own contact (`box2d_own`)
-  InWorldSide plugin;   ///< the backend through the plug-in
+  int steps = 0;                                  ///< steps of every run
+  int repetitions = 0;                            ///< runs of each side
+  InWorldSide own;                                ///< Box2D's own contact (`box2d_own`)
+  InWorldSide plugin;                             ///< the backend through the plug-in
   /// The plug-in's narrow-phase time over Box2D's own (< 1: the plug-in is faster).
   double narrowphase_ratio() const { return plugin.narrowphase_ms / own.narrowphase_ms; }
   /// The plug-in's step time over Box2D's own.
@@ -52,9 +52,10 @@ struct InWorldRatio {
 int in_world_repetitions(bool quick);
 
 /// Runs `run(runner)` alternately for Box2D's own contact and `backend`, `repetitions` times each
-/// (own first), and returns the medians (and, through `plugin_runs`, the plug-in's runs). `run` builds, steps and measures one world (e.g. a
-/// catalogue scene or a scaling size) and must give every call the same seed and steps. Throws
-/// `std::invalid_argument` for `repetitions` < 1, and what `run` throws.
+/// (own first), and returns the medians (and, through `plugin_runs`, the plug-in's runs). `run`
+/// builds, steps and measures one world (e.g. a catalogue scene or a scaling size) and must give
+/// every call the same seed and steps. Throws `std::invalid_argument` for `repetitions` < 1, and
+/// what `run` throws.
 InWorldRatio measure_in_world(const std::string& scene, box2d::Backend backend, int repetitions,
                               const std::function<scenes::SceneMetrics(const scenes::Runner&)>& run,
                               std::vector<scenes::SceneMetrics>* plugin_runs = nullptr);

@@ -83,14 +83,13 @@ ViewFixture fixture_of(int body, const b2Shape& shape) {
       f.points = {e.m_vertex1, e.m_vertex2};
       break;
     }
-    default: break;  // the scenes make no chains
+    default:
+      break;  // the scenes make no chains
   }
   return f;
 }
 
-BodyPose pose_of(const b2Body& b) {
-  return {b.GetPosition().x, b.GetPosition().y, b.GetAngle()};
-}
+BodyPose pose_of(const b2Body& b) { return {b.GetPosition().x, b.GetPosition().y, b.GetAngle()}; }
 
 // A contact's frame entry: kept when touching or when the plug-in removed Box2D's points.
 void add_contact(ViewFrame& frame, ViewContact&& c) {
@@ -234,8 +233,7 @@ std::vector<ViewFrame> record_paper(const scenes::Runner& runner, const box2d::C
       manifolds.push_back({{i, j}, m});
     }
     frame.collide_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (const auto& [pair, m] : manifolds) {
       const auto [i, j] = pair;
       ViewContact v;
@@ -277,8 +275,7 @@ float ViewManifold::deepest() const {
 
 LockstepRecording record_lockstep(std::string_view name,
                                   const std::array<scenes::Runner, 2>& runners, int steps,
-                                  std::uint64_t seed,
-                                  const std::array<box2d::Config, 2>& configs) {
+                                  std::uint64_t seed, const std::array<box2d::Config, 2>& configs) {
   if (scenes::find_scene(name) == nullptr) {
     throw std::invalid_argument("no scene called '" + std::string(name) + "'");
   }

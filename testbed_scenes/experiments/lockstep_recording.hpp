@@ -71,9 +71,9 @@ struct ViewManifold {
   b2Vec2 local_normal{0, 0};
   b2Vec2 local_point{0, 0};
   struct Point {
-    b2Vec2 position{0, 0};   ///< midpoint between the surfaces (world, m)
-    float separation = 0;    ///< negative when overlapping (m)
-    std::uint32_t key = 0;   ///< `b2ContactID::key`: the feature pair warm starting matches on
+    b2Vec2 position{0, 0};  ///< midpoint between the surfaces (world, m)
+    float separation = 0;   ///< negative when overlapping (m)
+    std::uint32_t key = 0;  ///< `b2ContactID::key`: the feature pair warm starting matches on
     /// `b2ManifoldPoint::localPoint`: the clip point in the incident body's frame (faces), B's
     /// centre in B's frame (circles).
     b2Vec2 local{0, 0};
@@ -97,7 +97,7 @@ struct ViewContact {
   int fixture_b = 0;
   ViewManifold manifold;  ///< the runner's
   EdgeMark mark = EdgeMark::None;
-  ViewManifold box2d;     ///< `b2CollidePolygons` on the same pose; valid when `mark` is not None
+  ViewManifold box2d;  ///< `b2CollidePolygons` on the same pose; valid when `mark` is not None
   /// The other runner has the same pair touching, deepest separations within
   /// `agreement_tolerance`.
   bool agrees = false;
@@ -133,9 +133,10 @@ struct LockstepRecording {
 /// world: its triangles follow their paths and each step's overlapping pairs go to the runner's
 /// collide function directly (`box2d-own`: `b2CollidePolygons`). Throws `std::invalid_argument`
 /// for an unknown scene or `steps` < 1, `std::runtime_error` for a refused installation.
-LockstepRecording record_lockstep(
-    std::string_view name, const std::array<scenes::Runner, 2>& runners, int steps,
-    std::uint64_t seed,
-    const std::array<box2d::Config, 2>& configs = {box2d::Config::all(), box2d::Config::all()});
+LockstepRecording record_lockstep(std::string_view name,
+                                  const std::array<scenes::Runner, 2>& runners, int steps,
+                                  std::uint64_t seed,
+                                  const std::array<box2d::Config, 2>& configs = {
+                                      box2d::Config::all(), box2d::Config::all()});
 
 }  // namespace dyop::experiments

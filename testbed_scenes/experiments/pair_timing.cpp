@@ -116,7 +116,8 @@ double time_per_pair(const NarrowPhase& p, const workloads::PairSet<T>& set, Lev
       }
       // Every pass is one frame of a small motion: the caches hold the previous frame's features.
       std::vector<PairState> cache(n);
-      for (std::size_t k = 0; k < n; ++k) penetrate(v.method, set.a[k], set.b_next[k], q, &cache[k]);
+      for (std::size_t k = 0; k < n; ++k)
+        penetrate(v.method, set.a[k], set.b_next[k], q, &cache[k]);
       return median_ns(n, passes, [&](int pass) {
         const std::vector<Triangle<T>>& b = pass % 2 == 0 ? set.b : set.b_next;
         double sink = 0;
@@ -155,10 +156,8 @@ double time_per_pair(const NarrowPhase& p, const workloads::PairSet<T>& set, Lev
   return 0;
 }
 
-template std::vector<Answer<float>> answers(const NarrowPhase&,
-                                            const workloads::PairSet<float>&);
-template std::vector<Answer<double>> answers(const NarrowPhase&,
-                                             const workloads::PairSet<double>&);
+template std::vector<Answer<float>> answers(const NarrowPhase&, const workloads::PairSet<float>&);
+template std::vector<Answer<double>> answers(const NarrowPhase&, const workloads::PairSet<double>&);
 template double time_per_pair(const NarrowPhase&, const workloads::PairSet<float>&, Level, int);
 template double time_per_pair(const NarrowPhase&, const workloads::PairSet<double>&, Level, int);
 

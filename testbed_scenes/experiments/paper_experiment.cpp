@@ -22,7 +22,6 @@ std::vector<adapters::NarrowPhase> experiment_methods() {
   return out;
 }
 
-
 Experiment run_experiment(std::uint64_t seed, int steps, int repetitions) {
   Experiment e;
   e.seed = seed;

@@ -46,7 +46,7 @@ struct Experiment {
   std::uint64_t pairs_tested = 0;       ///< (pair, step) samples whose bounding boxes overlap
   std::uint64_t pairs_penetrating = 0;  ///< of those, exactly penetrating
   std::array<std::uint64_t, type_count> pairs_per_type{};  ///< samples each type is in
-  std::vector<MethodFigures> methods;  ///< in `experiment_methods()` order
+  std::vector<MethodFigures> methods;                      ///< in `experiment_methods()` order
 };
 
 /// Runs the experiment: `repetitions` timed passes of every method (interleaved, so that the

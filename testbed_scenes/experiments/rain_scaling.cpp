@@ -15,7 +15,8 @@ namespace {
 
 using detail::fixed;
 
-scenes::SceneMetrics run_rain(const scenes::Runner& runner, int falling, const ScalingOptions& options) {
+scenes::SceneMetrics run_rain(const scenes::Runner& runner, int falling,
+                              const ScalingOptions& options) {
   const std::unique_ptr<scenes::Scene> scene = scenes::make_rain(falling, runner, options.seed);
   for (int i = 0; i < options.steps; ++i) scene->step();
   return scene->metrics();
@@ -40,8 +41,7 @@ ScalingRecord record_of(const scenes::SceneMetrics& m, int falling) {
 
 }  // namespace
 
-std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
-                                            std::ostream& progress) {
+std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options, std::ostream& progress) {
   if (options.steps < 2) throw std::invalid_argument("scaling runs need at least 2 steps");
   for (int n : options.sizes) {
     if (n < 1) throw std::invalid_argument("scaling sizes must be at least 1 triangle");
@@ -52,8 +52,8 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
     for (box2d::Backend b : box2d::all_backends) {
       const auto start = std::chrono::steady_clock::now();
       scenes::SceneMetrics backend_run;
-      const InWorldRatio pair = measure_in_world(
-          "rain-" + std::to_string(n), b, 1, [&](const scenes::Runner& runner) {
+      const InWorldRatio pair =
+          measure_in_world("rain-" + std::to_string(n), b, 1, [&](const scenes::Runner& runner) {
             scenes::SceneMetrics m = run_rain(runner, n, options);
             (runner ? backend_run : own_runs.emplace_back()) = m;
             return m;
@@ -64,15 +64,15 @@ std::vector<ScalingRecord> run_rain_scaling(const ScalingOptions& options,
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       progress << "dyop bench: rain " << n << " triangles, " << box2d::name(b) << ": "
-               << fixed(records.back().narrowphase_ms_per_step, 2)
-               << " ms narrow phase per step, " << fixed(pair.narrowphase_ratio(), 2)
-               << "x Box2D's own (step " << fixed(pair.step_ratio(), 2) << "x; "
-               << fixed(s, 1) << " s with the own run)\n";
+               << fixed(records.back().narrowphase_ms_per_step, 2) << " ms narrow phase per step, "
+               << fixed(pair.narrowphase_ratio(), 2) << "x Box2D's own (step "
+               << fixed(pair.step_ratio(), 2) << "x; " << fixed(s, 1) << " s with the own run)\n";
     }
     // Box2D's own contact at this size: the run of median narrow-phase time.
-    std::sort(own_runs.begin(), own_runs.end(), [](const scenes::SceneMetrics& x, const scenes::SceneMetrics& y) {
-      return x.narrowphase_ms_total < y.narrowphase_ms_total;
-    });
+    std::sort(own_runs.begin(), own_runs.end(),
+              [](const scenes::SceneMetrics& x, const scenes::SceneMetrics& y) {
+                return x.narrowphase_ms_total < y.narrowphase_ms_total;
+              });
     records.push_back(record_of(own_runs[own_runs.size() / 2], n));
     records.back().ratio_vs_own = records.back().step_ratio_vs_own = 1;
   }

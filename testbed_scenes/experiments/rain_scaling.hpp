@@ -31,15 +31,15 @@ struct ScalingOptions {
 
 /// One run: a runner on `rain` with `falling` triangles.
 struct ScalingRecord {
-  scenes::Runner runner;        ///< a backend, or Box2D's own contact (plug-in not installed)
-  int falling = 0;              ///< falling triangles
-  int triangles = 0;            ///< every triangle fixture, the bin's included
-  int steps = 0;                ///< steps run
-  double step_ms_median = 0;    ///< scenes::median wall time of a step (ms)
+  scenes::Runner runner;      ///< a backend, or Box2D's own contact (plug-in not installed)
+  int falling = 0;            ///< falling triangles
+  int triangles = 0;          ///< every triangle fixture, the bin's included
+  int steps = 0;              ///< steps run
+  double step_ms_median = 0;  ///< scenes::median wall time of a step (ms)
   double narrowphase_ms_per_step = 0;  ///< Box2D's collide time per measured step (ms)
   double narrowphase_ns_per_pair = 0;  ///< the same per contact update (ns)
-  double pairs_per_step = 0;    ///< triangle contact updates per measured step
-  double ratio_vs_box2d = 0;    ///< narrowphase_ms_per_step / box2d's at the same size
+  double pairs_per_step = 0;           ///< triangle contact updates per measured step
+  double ratio_vs_box2d = 0;           ///< narrowphase_ms_per_step / box2d's at the same size
   /// Narrow-phase time (`b2Profile::collide`, steps 2..N) over that of the Box2D's-own run just
   /// before it, same size (1 for box2d-own).
   double ratio_vs_own = 0;

@@ -38,8 +38,9 @@ std::vector<RecyclingRecord> run_recycling_sweep(const RecyclingSweepOptions& op
     box2d::Config config = options.config;
 
     config.recycle_distance = 0;
-    RecyclingRecord own{name, SweepRow::Own, 0, std::nullopt, 0,
-                        run(name, std::nullopt, steps, options.seed, config, true)};
+    RecyclingRecord own{name, SweepRow::Own,
+                        0,    std::nullopt,
+                        0,    run(name, std::nullopt, steps, options.seed, config, true)};
     out.push_back(std::move(own));
 
     for (const float distance : options.distances) {
@@ -61,11 +62,10 @@ std::vector<RecyclingRecord> run_recycling_sweep(const RecyclingSweepOptions& op
 
     config.recycle_distance = 0;
     RecyclingRecord floor{name, SweepRow::Floor, 0, std::nullopt, 0, std::nullopt};
-    floor.timing = measure_in_world(name, backend, options.repetitions,
-                                    [&](const scenes::Runner& runner) {
-                                      return run(name, runner, steps, options.seed, config,
-                                                 false, true);
-                                    });
+    floor.timing =
+        measure_in_world(name, backend, options.repetitions, [&](const scenes::Runner& runner) {
+          return run(name, runner, steps, options.seed, config, false, true);
+        });
     out.push_back(std::move(floor));
     progress << "compare: recycling sweep " << name << " ("
              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()

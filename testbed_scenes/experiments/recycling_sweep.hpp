@@ -1,13 +1,15 @@
 #pragma once
 /// \file
 /// Run time against error for manifold recycling (`box2d::Config::recycle_distance`), per scene:
-/// - for each distance of `RecyclingSweepOptions::distances` (0: off), the plug-in's `dyop` with that distance
+/// - for each distance of `RecyclingSweepOptions::distances` (0: off), the plug-in's `dyop` with
+/// that distance
 ///   against Box2D's own contact (uninstalled), alternating in one process
 ///   (`measure_in_world`): narrow phase, `SolveTOI` and step; the share of evaluations that kept
 ///   their manifold; and, in one more run with `Scene::check_manifolds`, what the solver got
 ///   (`ManifoldErrors`), the deepest exact penetration, the top bodies' drift and the slide's
 ///   figures;
-/// - the floor: `dyop` installed never to recompute (`box2d::measurement::install_never_recompute`),
+/// - the floor: `dyop` installed never to recompute
+/// (`box2d::measurement::install_never_recompute`),
 ///   against Box2D's own likewise (its world is physically wrong: only its times count);
 /// - Box2D's own contact's accuracy in the same run (its float errors: the yardstick).
 
@@ -29,9 +31,9 @@ inline const std::vector<float> recycle_distances = {0.0f, 0.001f, 0.005f, 0.01f
 
 /// What a sweep row measured.
 enum class SweepRow : std::uint8_t {
-  Own,      ///< Box2D's own contact: accuracy only (its times are every other row's reference)
-  Plugin,   ///< `dyop` at `distance`
-  Floor,    ///< `dyop` never recomputing: times only
+  Own,     ///< Box2D's own contact: accuracy only (its times are every other row's reference)
+  Plugin,  ///< `dyop` at `distance`
+  Floor,   ///< `dyop` never recomputing: times only
 };
 
 /// One row of a scene's sweep.
@@ -50,7 +52,7 @@ struct RecyclingRecord {
 
 /// What to sweep.
 struct RecyclingSweepOptions {
-  std::vector<std::string> scenes;  ///< catalogue names (Box2D scenes)
+  std::vector<std::string> scenes;                   ///< catalogue names (Box2D scenes)
   std::vector<float> distances = recycle_distances;  ///< metres, each ≥ 0 (0: off)
   /// Steps of every run of a scene (by name).
   std::function<int(const std::string&)> steps;

@@ -28,9 +28,9 @@ struct SliderPath {
 
 /// A sliding scene run under one runner.
 struct SlideRun {
-  scenes::SceneMetrics metrics;           ///< its figures (`metrics.slide` holds the sliders')
+  scenes::SceneMetrics metrics;   ///< its figures (`metrics.slide` holds the sliders')
   std::vector<SliderPath> paths;  ///< one per slider, in `metrics.slide->sliders` order
-  scenes::Drawing final_state;            ///< the world after the last step
+  scenes::Drawing final_state;    ///< the world after the last step
 };
 
 /// Runs `scene` (a scene with sliders: `slide` or `tiles`) for `steps` steps under `runner` with

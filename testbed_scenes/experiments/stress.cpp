@@ -48,8 +48,8 @@ RawPair variant(Invariance which, const RawPair& p, Precision precision, workloa
   switch (which) {
     case Invariance::Translation: {
       const double t = 2 * kPi * rng.unit();
-      const V shift = workloads::pair_size(p) * std::pow(10.0, 2 * rng.unit()) *
-                      V(std::cos(t), std::sin(t));
+      const V shift =
+          workloads::pair_size(p) * std::pow(10.0, 2 * rng.unit()) * V(std::cos(t), std::sin(t));
       for (auto* tri : {&out.a, &out.b}) {
         for (V& v : *tri) v += shift;
       }
@@ -72,7 +72,8 @@ RawPair variant(Invariance which, const RawPair& p, Precision precision, workloa
       std::rotate(out.a.begin(), out.a.begin() + 1 + rng.below(2), out.a.end());
       std::swap(out.b[1], out.b[2]);
       return out;
-    case Invariance::Swap: return RawPair{p.b, p.a};
+    case Invariance::Swap:
+      return RawPair{p.b, p.a};
   }
   return out;
 }
@@ -117,7 +118,8 @@ Category prepare(InputClass c, Precision precision, const StressOptions& o) {
     for (int v = 0; v < kVariants; ++v) cat.exact[v][k] = e.separation;
     for (Invariance moved : {Invariance::Translation, Invariance::Rotation}) {
       const int v = 1 + static_cast<int>(moved);
-      if (cat.valid[v][k]) cat.exact[v][k] = workloads::exact_separation(cat.pairs[v][k]).separation;
+      if (cat.valid[v][k])
+        cat.exact[v][k] = workloads::exact_separation(cat.pairs[v][k]).separation;
     }
   }
   return cat;
@@ -169,7 +171,8 @@ StressRecord measure(const adapters::NarrowPhase& r, InputClass c, const Categor
       rec.worst_pair = csv_line(cat.pairs[0][k]);
     }
     const double band = 4 * touching_tolerance<T>() * size;
-    if (std::abs(exact) > band && a.status != (exact < 0 ? Status::Penetrating : Status::Separated)) {
+    if (std::abs(exact) > band &&
+        a.status != (exact < 0 ? Status::Penetrating : Status::Separated)) {
       ++rec.misclassified;
     }
     for (int v = 1; v < kVariants; ++v) {
@@ -227,10 +230,14 @@ bool promises_invariance(const adapters::NarrowPhase& p) {
 
 const char* name(Invariance i) {
   switch (i) {
-    case Invariance::Translation: return "translation";
-    case Invariance::Rotation: return "rotation";
-    case Invariance::Reorder: return "reorder";
-    case Invariance::Swap: return "swap";
+    case Invariance::Translation:
+      return "translation";
+    case Invariance::Rotation:
+      return "rotation";
+    case Invariance::Reorder:
+      return "reorder";
+    case Invariance::Swap:
+      return "swap";
   }
   return "unknown";
 }
@@ -268,7 +275,8 @@ std::vector<std::string> broken_promises(const std::vector<StressRecord>& record
       out.push_back(what + std::to_string(r.nonfinite) + " NaN or inf answers");
     }
     if (r.invalid > 0) {
-      out.push_back(what + std::to_string(r.invalid) + " valid pairs answered Invalid or rows lost");
+      out.push_back(what + std::to_string(r.invalid) +
+                    " valid pairs answered Invalid or rows lost");
     }
   }
   return out;

@@ -26,10 +26,10 @@
 namespace dyop::experiments {
 
 struct StressOptions {
-  int pairs = 5000;               ///< pairs per category and precision
-  std::uint64_t seed = 2027;      ///< the same seed gives the same pairs and figures
-  bool run_double = true;         ///< measure the double instantiation
-  bool run_float = true;          ///< measure the float instantiation (and Box2D)
+  int pairs = 5000;           ///< pairs per category and precision
+  std::uint64_t seed = 2027;  ///< the same seed gives the same pairs and figures
+  bool run_double = true;     ///< measure the double instantiation
+  bool run_float = true;      ///< measure the float instantiation (and Box2D)
 };
 
 /// The bound of "exact", relative to the pair's size: double 1e-12; float 1e-5 (on float input).
@@ -57,9 +57,9 @@ const char* name(Invariance i);
 /// One narrow phase on one category in one precision.
 struct StressRecord {
   adapters::NarrowPhase method;  ///< what ran; every run is cold (`adapters::name`)
-  workloads::InputClass cls = workloads::InputClass::General;  ///< the category
+  workloads::InputClass cls = workloads::InputClass::General;     ///< the category
   workloads::Precision precision = workloads::Precision::Double;  ///< the scalar it ran in
-  int pairs = 0;                                                   ///< pairs generated
+  int pairs = 0;                                                  ///< pairs generated
   /// Pairs with a triangle that `Triangle<T>::make` rejects (degenerate, too large, ...): each
   /// gets a clear error and is not run; not a failure.
   int rejected = 0;

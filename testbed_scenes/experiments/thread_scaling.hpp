@@ -31,9 +31,9 @@ struct ThreadScalingOptions {
 /// The fastest run of one runner at one N.
 struct ThreadScalingRecord {
   scenes::Runner runner;  ///< `Backend::Dyop`, or Box2D's own contact (the plug-in not installed)
-  int threads = 0;     ///< worlds stepped at once, one per thread
-  int steps = 0;       ///< steps of each world
-  double seconds = 0;  ///< wall time from the threads' start to the last one's end
+  int threads = 0;        ///< worlds stepped at once, one per thread
+  int steps = 0;          ///< steps of each world
+  double seconds = 0;     ///< wall time from the threads' start to the last one's end
   /// Steps of all worlds per second of wall time (threads × steps / seconds).
   double steps_per_second = 0;
   /// `steps_per_second` over Box2D's own at the same N (1 for box2d-own): above 1, faster.

@@ -57,7 +57,8 @@ int run(const BenchArgs& args) {
   if (!args.no_scaling) {
     experiments::ScalingOptions scaling;
     scaling.steps = args.quick ? kQuickScalingSteps : kScalingSteps;
-    const std::vector<experiments::ScalingRecord> rain = experiments::run_rain_scaling(scaling, std::cerr);
+    const std::vector<experiments::ScalingRecord> rain =
+        experiments::run_rain_scaling(scaling, std::cerr);
     tables << '\n';
     report::scaling_records(rain).write_table(tables);
     if (dir && dir->created()) sections = report::write_scaling_outputs(rain, *dir);
@@ -80,15 +81,18 @@ int run(const BenchArgs& args) {
       streams.steps = kQuickStreamSteps;
       streams.passes = kQuickStreamPasses;
     }
-    const std::vector<experiments::StreamResult> results = experiments::run_streams(streams, std::cerr);
+    const std::vector<experiments::StreamResult> results =
+        experiments::run_streams(streams, std::cerr);
     tables << '\n';
     report::stream_records(results).write_table(tables);
     if (dir && dir->created()) sections += report::write_stream_outputs(results, *dir);
   }
 #endif
   if (!args.json.empty()) {
-    const std::optional<report::Problem> problem = report::write_output(
-        args.json, std::cout, [&](std::ostream& o) { report::write_json_document(report::bench_records(records).json(), o); });
+    const std::optional<report::Problem> problem =
+        report::write_output(args.json, std::cout, [&](std::ostream& o) {
+          report::write_json_document(report::bench_records(records).json(), o);
+        });
     if (problem) {
       std::cerr << "dyop bench: " << problem->message << '\n';
       return exit_code_for({*problem});
@@ -96,7 +100,8 @@ int run(const BenchArgs& args) {
   }
   if (dir) {
     report::write_outputs(records, *dir, sections);
-    for (const report::Problem& p : dir->problems()) std::cerr << "dyop bench: " << p.message << '\n';
+    for (const report::Problem& p : dir->problems())
+      std::cerr << "dyop bench: " << p.message << '\n';
     std::cerr << "dyop bench: report in " << args.out << "/report.md\n";
     return exit_code_for(dir->problems());
   }

@@ -48,8 +48,7 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
         << p.message << '\n';
   }
   out << "\nreport: " << options.out_dir << "/report.md (run took "
-      << fmt("%.1f", comparison.seconds)
-      << " s)\n";
+      << fmt("%.1f", comparison.seconds) << " s)\n";
   return exit_code_for(problems);
 }
 

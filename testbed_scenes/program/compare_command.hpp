@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// `dyop compare [--quick] [--out DIR] [--skip all|none|LIST]`: every scene under every backend
-/// (`experiments/compare.hpp`), the tables printed and the report written (`report/compare_report.hpp`).
+/// (`experiments/compare.hpp`), the tables printed and the report written
+/// (`report/compare_report.hpp`).
 
 #include <iosfwd>
 

@@ -24,9 +24,9 @@ constexpr int pair_fields = 12;
 /// One input line, classified.
 struct PairLine {
   enum class Kind { Skip, Data, Error };
-  Kind kind = Kind::Skip;                  ///< Skip: blank or comment
+  Kind kind = Kind::Skip;                    ///< Skip: blank or comment
   std::array<double, pair_fields> values{};  ///< Data only: the 12 coordinates, all finite
-  std::string message;                     ///< Error only: what is wrong, naming the field
+  std::string message;                       ///< Error only: what is wrong, naming the field
 };
 
 /// Parses one line (without its end-of-line; a trailing '\r' is ignored).

@@ -15,8 +15,8 @@ std::vector<PairMethod> pairs_methods() {
     if (!adapters::runs_pairs<float>(p) || (p.method && p.method->warm)) continue;  // cold only
     // A method's own spelling ("lin-canny", not its cold variant's): one way to run each here.
     const char* spelling = p.method ? dyop::name(p.method->method) : adapters::name(p);
-    out.push_back({p, spelling, adapters::pair_function<double>(p),
-                   adapters::pair_function<float>(p)});
+    out.push_back(
+        {p, spelling, adapters::pair_function<double>(p), adapters::pair_function<float>(p)});
   }
   return out;
 }

@@ -69,7 +69,8 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
     const PairLine line = parse_pair_line(text);
     if (line.kind == PairLine::Kind::Skip) continue;
     if (line.kind == PairLine::Kind::Error) {
-      for (const PairMethod& b : options.methods) emit(b, format_error_line(row, line.message), false);
+      for (const PairMethod& b : options.methods)
+        emit(b, format_error_line(row, line.message), false);
       continue;
     }
     // Built once per precision: a float-only method runs in float even in a double run.
@@ -82,11 +83,11 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
         emit(b, format_error_line(row, message), false);
         continue;
       }
-      const Result<double> r =
-          use_float ? widen(b.run_float(in_float.a.triangle, in_float.b.triangle,
-                                        Query<float>{Level::Depth}, nullptr))
-                    : b.run_double(in_double.a.triangle, in_double.b.triangle,
-                                   Query<double>{Level::Depth}, nullptr);
+      const Result<double> r = use_float
+                                   ? widen(b.run_float(in_float.a.triangle, in_float.b.triangle,
+                                                       Query<float>{Level::Depth}, nullptr))
+                                   : b.run_double(in_double.a.triangle, in_double.b.triangle,
+                                                  Query<double>{Level::Depth}, nullptr);
       emit(b, format_result_line(row, r), r.status != Status::Invalid);
     }
   }

@@ -12,8 +12,8 @@ namespace dyop::cli {
 
 struct PairsOptions {
   std::vector<PairMethod> methods;  ///< one: the CSV contract; several: a `method` column first
-  bool use_float = false;  ///< convert input to float and run the float instantiation
-  bool table = false;      ///< aligned human-readable table instead of CSV
+  bool use_float = false;           ///< convert input to float and run the float instantiation
+  bool table = false;               ///< aligned human-readable table instead of CSV
 };
 
 /// Output lines written, and how many of them are errors.

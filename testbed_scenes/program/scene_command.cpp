@@ -35,7 +35,8 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
       << "  kinetic energy " << m.kinetic_energy_final << " J";
   if (m.top_displacement) out << ", top displacement " << *m.top_displacement << " m";
   if (m.fallbacks) out << ", fallbacks to Box2D " << *m.fallbacks;
-  out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << report::hash_hex(m.hash) << '\n';
+  out << (m.nan_detected ? ", NaN DETECTED" : ", no NaN") << ", hash " << report::hash_hex(m.hash)
+      << '\n';
   if (m.slide) {
     out << "  sliding bodies: largest |vy| " << m.slide->max_vertical_speed << " m/s, |w| "
         << m.slide->max_angular_speed << " rad/s, smallest travel " << 100 * m.slide->min_travel
@@ -43,17 +44,17 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
     if (m.top_displacement) out << "; resting box jitter " << *m.top_displacement << " m";
     out << '\n';
     for (const SliderFigures& s : m.slide->sliders) {
-      out << "    " << s.body << " on " << s.ground << (s.rolling ? " (rolling)" : "")
-          << ": |vy| " << s.max_vertical_speed << " m/s, |w| " << s.max_angular_speed
-          << " rad/s, travel " << 100 * s.travel << " %\n";
+      out << "    " << s.body << " on " << s.ground << (s.rolling ? " (rolling)" : "") << ": |vy| "
+          << s.max_vertical_speed << " m/s, |w| " << s.max_angular_speed << " rad/s, travel "
+          << 100 * s.travel << " %\n";
     }
   }
   if (m.manifold_errors) {
     const ManifoldErrors& e = *m.manifold_errors;
     out << "  manifolds the solver got: against a fresh answer (" << e.touching
         << " touching pairs) separation off by at most " << e.kept_max << " m, " << e.stale
-        << " stale; against exact (" << e.checked << " penetrating) depth error max "
-        << e.depth_max << " m, normal error max " << e.normal_max << " m\n";
+        << " stale; against exact (" << e.checked << " penetrating) depth error max " << e.depth_max
+        << " m, normal error max " << e.normal_max << " m\n";
   }
   if (m.skip_config && m.skips) {
     out << "  skips " << skip_argument(*m.skip_config) << ": of "
@@ -70,7 +71,7 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
     }
   } else {
     out << (!m.runner ? "  skips: none apply (the plug-in is not installed)\n"
-                                   : "  skips: none apply (no Box2D world)\n");
+                      : "  skips: none apply (no Box2D world)\n");
   }
   out.precision(precision);
   out.flags(flags);
@@ -135,17 +136,16 @@ int run_scene_command(const SceneCommand& c, std::ostream& out, std::ostream& er
   SceneMetrics m;
   Drawing final_state;
   try {
-    const std::unique_ptr<Scene> scene =
-        c.falling ? make_rain(*c.falling, *runner, c.seed, skips.config)
-                  : make_scene(c.scene, *runner, c.seed, skips.config);
+    const std::unique_ptr<Scene> scene = c.falling
+                                             ? make_rain(*c.falling, *runner, c.seed, skips.config)
+                                             : make_scene(c.scene, *runner, c.seed, skips.config);
     if (c.check_manifolds) scene->check_manifolds();
     if (c.spawn_far) scene->spawn_far_away();
     for (int i = c.steps.value_or(info->default_steps); i > 0; --i) scene->step();
     if (!c.svg.empty()) final_state = scene->drawing();
     m = scene->metrics();
   } catch (const std::exception& e) {
-    err << "dyop scene: " << c.scene << " / " << c.runner << " could not run: " << e.what()
-        << '\n';
+    err << "dyop scene: " << c.scene << " / " << c.runner << " could not run: " << e.what() << '\n';
     return exit_io_error;
   }
   write_summary(m, summary);
@@ -210,13 +210,13 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   CLI::Option* falling_option = cmd->add_option(
       "--falling", *falling,
       "rain and rain-tall only: this many falling triangles (the rain scaling's sizes)");
-  cmd->callback([args, steps, steps_option, falling, falling_option, recycle, recycle_option,
-                 &exit_code] {
-    if (steps_option->count() > 0) args->steps = *steps;
-    if (recycle_option->count() > 0) args->recycle = *recycle;
-    if (falling_option->count() > 0) args->falling = *falling;
-    exit_code = run_scene_command(*args, std::cout, std::cerr);
-  });
+  cmd->callback(
+      [args, steps, steps_option, falling, falling_option, recycle, recycle_option, &exit_code] {
+        if (steps_option->count() > 0) args->steps = *steps;
+        if (recycle_option->count() > 0) args->recycle = *recycle;
+        if (falling_option->count() > 0) args->falling = *falling;
+        exit_code = run_scene_command(*args, std::cout, std::cerr);
+      });
 }
 
 }  // namespace dyop::cli

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
 /// `dyop scene NAME --runner R [--steps N] [--seed S] [--falling N] [--skip all|none|LIST]
-/// [--json FILE|-] [--svg FILE|-]`: runs one scene under one runner with the given narrow-phase skips, prints a
-/// short summary, and writes the figures as JSON and the final state as SVG. The command line
-/// (CLI11, `add_scene_command`) validates names; this checks them again, checks files and runs.
+/// [--json FILE|-] [--svg FILE|-]`: runs one scene under one runner with the given narrow-phase
+/// skips, prints a short summary, and writes the figures as JSON and the final state as SVG. The
+/// command line (CLI11, `add_scene_command`) validates names; this checks them again, checks files
+/// and runs.
 
 #include <cstdint>
 #include <iosfwd>
@@ -15,7 +16,7 @@
 namespace dyop::cli {
 
 struct SceneCommand {
-  std::string scene;         ///< a name of `scenes::scene_catalog()`
+  std::string scene;  ///< a name of `scenes::scene_catalog()`
   /// A backend ("dyop", "dyop-fast", "lin-canny", "sat", "epa", "box2d"), or "box2d-own" (Box2D
   /// scenes: the plug-in not installed): `scenes::parse_runner`
   std::string runner;
@@ -37,8 +38,8 @@ struct SceneCommand {
   /// Make and destroy a body far from the scene at alternate steps (`Scene::spawn_far_away`):
   /// every step sees the world's count of fixtures move, for both runners.
   bool spawn_far = false;
-  std::string json;          ///< empty: none; "-": `out`
-  std::string svg;           ///< empty: none; "-": `out`
+  std::string json;  ///< empty: none; "-": `out`
+  std::string svg;   ///< empty: none; "-": `out`
 };
 
 /// Runs the command. Output files are opened before the scene runs, so an unwritable path fails

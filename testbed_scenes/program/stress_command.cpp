@@ -31,9 +31,11 @@ int run(const StressArgs& args) {
   options.seed = args.seed;
   options.run_double = args.precision != "float";
   options.run_float = args.precision != "double";
-  const std::vector<experiments::StressRecord> records = experiments::run_stress(options, std::cerr);
+  const std::vector<experiments::StressRecord> records =
+      experiments::run_stress(options, std::cerr);
   // Standard output carries one thing: the table, or what was asked for on "-".
-  if (args.json != "-" && args.markdown != "-") report::stress_records(records).write_table(std::cout);
+  if (args.json != "-" && args.markdown != "-")
+    report::stress_records(records).write_table(std::cout);
   std::vector<report::Problem> problems;
   auto write = [&](const std::string& path, auto&& body) {
     if (path.empty()) return;
@@ -42,12 +44,15 @@ int run(const StressArgs& args) {
       problems.push_back(*p);
     }
   };
-  write(args.json, [&](std::ostream& o) { report::write_json_document(report::stress_records(records).json(), o); });
+  write(args.json, [&](std::ostream& o) {
+    report::write_json_document(report::stress_records(records).json(), o);
+  });
   write(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
   const std::vector<std::string> broken = experiments::broken_promises(records);
   for (const std::string& b : broken) std::cerr << "dyop stress: broken promise: " << b << '\n';
   std::cerr << "dyop stress: " << records.size() << " records, "
-            << (broken.empty() ? "every promise held" : std::to_string(broken.size()) + " broken promises")
+            << (broken.empty() ? "every promise held"
+                               : std::to_string(broken.size()) + " broken promises")
             << '\n';
   if (!problems.empty()) return exit_code_for(problems);
   return args.check && !broken.empty() ? exit_check_failed : exit_success;

@@ -56,8 +56,8 @@ void write_summary(const experiments::LockstepRecording& r, const std::string& p
       settings += ")";
     }
     out << "  " << (k == 0 ? "A " : "B ") << name(r.runners[k]) << settings << ": " << f.touching
-        << " contacts, " << f.agreeing << " agree with " << name(r.runners[1 - k]) << ", "
-        << marked << " differ from b2CollidePolygons, largest penetration "
+        << " contacts, " << f.agreeing << " agree with " << name(r.runners[1 - k]) << ", " << marked
+        << " differ from b2CollidePolygons, largest penetration "
         << report::fmt("%.2f", f.max_penetration * 1000) << " mm\n";
   }
   out << "page: " << page << " (" << bytes << " bytes)\n";
@@ -142,9 +142,8 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
 
   experiments::LockstepRecording recording;
   try {
-    recording = experiments::record_lockstep(c.scene, runners,
-                                             c.steps.value_or(info->default_steps), c.seed,
-                                             configs);
+    recording = experiments::record_lockstep(
+        c.scene, runners, c.steps.value_or(info->default_steps), c.seed, configs);
     report::write_viewer_page(recording, html.stream());
   } catch (const std::exception& e) {
     err << "dyop view: " << c.scene << " could not run: " << e.what() << '\n';

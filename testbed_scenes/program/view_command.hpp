@@ -35,8 +35,8 @@ struct ViewCommand {
 
 /// Runs the command: the page is written, then one line per runner and the page's path and size
 /// on `out` (on `err` when the JSON goes to `out`). Returns `exit_success`, `exit_usage_error`
-/// (unknown name or skip, not two runners, more than two settings) or `exit_io_error` (a file cannot be written, or the
-/// scene could not run), with the reason on `err`.
+/// (unknown name or skip, not two runners, more than two settings) or `exit_io_error` (a file
+/// cannot be written, or the scene could not run), with the reason on `err`.
 int run_view_command(const ViewCommand& command, std::ostream& out, std::ostream& err);
 
 }  // namespace dyop::cli

@@ -55,10 +55,9 @@ Records bench_records(const std::vector<BenchRecord>& records) {
     out.add({Value::text(adapters::name(r.method)), Value::text(workloads::name(r.cls)),
              Value::text(name(r.level)), Value::text(workloads::name(r.precision)),
              Value::count(r.pairs), Value::count(r.timed_pairs),
-             Value::number(r.ns_per_pair, "%.1f"),
-             Value::number(r.ratio_vs_box2d, "%.3f"), Value::number(r.err_max, "%.2e"),
-             Value::number(r.err_mean, "%.2e"), Value::number(r.err_p99, "%.2e"),
-             Value::number(r.exact_fraction, "%.3f"),
+             Value::number(r.ns_per_pair, "%.1f"), Value::number(r.ratio_vs_box2d, "%.3f"),
+             Value::number(r.err_max, "%.2e"), Value::number(r.err_mean, "%.2e"),
+             Value::number(r.err_p99, "%.2e"), Value::number(r.exact_fraction, "%.3f"),
              Value::number(100 * r.exact_fraction, "%.1f%%"),
              Value::number(r.normal_err_max, "%.2e"), Value::number(r.normal_err_mean, "%.2e"),
              Value::count(r.misclassified), Value::count(r.invalid)});
@@ -98,11 +97,12 @@ void write_outputs(const std::vector<BenchRecord>& records, ReportDirectory& dir
             "set logscale xy\nset format y '10^{%L}'\nset xlabel 'ns per pair (median)'\n"
             "set ylabel 'max |depth error| / pair size (1e-17 = exact)'\nset grid\n"
             "set key top right\n"
-            "plot " + dir.quoted("time_vs_error.dat") +
+            "plot " +
+                dir.quoted("time_vs_error.dat") +
                 " using 2:3 with points pt 7 ps 1.2 title 'methods', \\\n"
                 "     '' using 2:3:1 with labels offset 1,1 left notitle, \\\n"
-                "     " + dir.quoted("pareto.dat") +
-                " using 2:3 with steps lw 2 title 'Pareto front'\n");
+                "     " +
+                dir.quoted("pareto.dat") + " using 2:3 with steps lw 2 title 'Pareto front'\n");
 
   dir.write("report.md", [&](std::ostream& o) {
     o << "# dyop bench\n\nRun time against error per method, input class, query level and "

@@ -59,16 +59,15 @@ void InWorldSection::run(const SectionContext& c) {
     const int steps = c.steps(*s);
     for (box2d::Backend b : experiments::in_world_backends(c.options.quick)) {
       const double start = c.elapsed();
-      rows_.push_back(
-          experiments::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
-            return scenes::run_scene(s->name, r, steps, c.options.seed, c.options.skips);
-          }));
+      rows_.push_back(experiments::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
+        return scenes::run_scene(s->name, r, steps, c.options.seed, c.options.skips);
+      }));
       const InWorldRatio& m = rows_.back();
       c.progress << "[in-world] " << s->name << " / " << box2d::name(b) << " against "
                  << scenes::box2d_own << ", " << reps << " times each: narrow phase "
                  << fixed(m.narrowphase_ratio(), 2) << "x, step " << fixed(m.step_ratio(), 2)
-                 << "x, " << fixed(c.elapsed() - start, 2) << " s (total "
-                 << fixed(c.elapsed(), 1) << " s)\n"
+                 << "x, " << fixed(c.elapsed() - start, 2) << " s (total " << fixed(c.elapsed(), 1)
+                 << " s)\n"
                  << std::flush;
     }
   }
@@ -119,7 +118,8 @@ void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
        << "set xtics nomirror font ',9'\nset key outside right top\n"
        << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2\n";
   for (const bool step : {false, true}) {
-    bars << "set title '" << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
+    bars << "set title '"
+         << (step ? "whole step (b2World::Step)" : "narrow phase (b2Profile::collide)")
          << "'\nset ylabel '× " << scenes::box2d_own << "'\n"
          << "plot for [i=2:" << backends.size() + 1 << "] "
          << dir.quoted(step ? "inworld_step.dat" : "inworld_collide.dat")

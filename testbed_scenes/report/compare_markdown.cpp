@@ -24,8 +24,8 @@ class Markdown {
     o << "# DyOP-PD: every scene under every narrow phase\n\n"
       << "`dyop compare" << (opt.quick ? " --quick" : "") << "`, seed " << opt.seed << ": "
       << run_.rows.size() << " runs in the main table, " << fmt("%.1f", comparison_.seconds)
-      << " s with its sections, on "
-      << std::thread::hardware_concurrency() << " hardware threads. Box2D 2.4.1, 60 Hz, 8 "
+      << " s with its sections, on " << std::thread::hardware_concurrency()
+      << " hardware threads. Box2D 2.4.1, 60 Hz, 8 "
       << "velocity and 3 position iterations, sleeping off.\n\n"
       << "## What is measured\n\n"
       << "- **Backends**: `dyop`, `dyop-fast`, `lin-canny` (warm-started, a cache per contact), "

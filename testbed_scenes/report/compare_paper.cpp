@@ -28,8 +28,8 @@ class PaperSection : public CompareSection {
       const int reps = experiments::paper_repetitions(c.options.quick);
       experiment_ = experiments::paper::run_experiment(c.options.seed, steps, reps);
       c.progress << "[paper] Figure 7 experiment, " << steps << " steps, " << reps
-                 << " repetitions of 8 methods: " << experiments::detail::fixed(c.elapsed() - start, 1)
-                 << " s\n";
+                 << " repetitions of 8 methods: "
+                 << experiments::detail::fixed(c.elapsed() - start, 1) << " s\n";
     }
   }
 
@@ -184,16 +184,16 @@ class PaperSection : public CompareSection {
                  {"steps", "", "", 6, where::files},
                  {"repetitions", "", "", 6, where::files}});
     for (const auto& m : e.methods) {
-      out.add({Value::text(adapters::name(m.method)), Value::number(m.us_total, "%.1f"),
-               Value::number(m.ns_per_pair, "%.1f"), Value::number(m.us_total / dyop.us_total, "%.2f"),
-               Value::number(m.us_all_pairs, "%.1f"),
-               Value::number(m.us_all_pairs / dyop.us_all_pairs, "%.2f"),
-               Value::metres(m.error_max), Value::metres(m.error_mean),
-               Value::count(static_cast<std::int64_t>(m.misclassified)),
-               Value::count(static_cast<std::int64_t>(m.invalid)),
-               Value::count(static_cast<std::int64_t>(e.pairs_tested)),
-               Value::count(static_cast<std::int64_t>(e.pairs_penetrating)), Value::count(e.steps),
-               Value::count(e.repetitions)});
+      out.add(
+          {Value::text(adapters::name(m.method)), Value::number(m.us_total, "%.1f"),
+           Value::number(m.ns_per_pair, "%.1f"), Value::number(m.us_total / dyop.us_total, "%.2f"),
+           Value::number(m.us_all_pairs, "%.1f"),
+           Value::number(m.us_all_pairs / dyop.us_all_pairs, "%.2f"), Value::metres(m.error_max),
+           Value::metres(m.error_mean), Value::count(static_cast<std::int64_t>(m.misclassified)),
+           Value::count(static_cast<std::int64_t>(m.invalid)),
+           Value::count(static_cast<std::int64_t>(e.pairs_tested)),
+           Value::count(static_cast<std::int64_t>(e.pairs_penetrating)), Value::count(e.steps),
+           Value::count(e.repetitions)});
     }
     return out;
   }

@@ -20,8 +20,8 @@ using experiments::SweepRow;
 // The scenes swept: those whose contacts rest or pile up (where keeping pays or costs), and the
 // slide, where bodies move fast over many edges. With `--quick` (the main command's overview,
 // kept to seconds), the pyramid at off, the default and 20 mm; the full run sweeps them all.
-const std::vector<std::string> kScenes = {"pyramid", "stack", "rain", "rain-tall", "tumbler",
-                                          "slide"};
+const std::vector<std::string> kScenes = {"pyramid",   "stack",   "rain",
+                                          "rain-tall", "tumbler", "slide"};
 const std::vector<std::string> kQuickScenes = {"pyramid"};
 const std::vector<float> kQuickDistances = {0.0f, box2d::default_recycle_distance, 0.02f};
 
@@ -29,9 +29,12 @@ constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 const char* row_name(SweepRow r) {
   switch (r) {
-    case SweepRow::Own: return scenes::box2d_own;
-    case SweepRow::Plugin: return box2d::name(box2d::Backend::Dyop);  // the sweep's backend
-    case SweepRow::Floor: return "floor";
+    case SweepRow::Own:
+      return scenes::box2d_own;
+    case SweepRow::Plugin:
+      return box2d::name(box2d::Backend::Dyop);  // the sweep's backend
+    case SweepRow::Floor:
+      return "floor";
   }
   return "?";
 }
@@ -127,8 +130,9 @@ class RecyclingSection : public CompareSection {
           const double kept = r.accuracy && r.accuracy->manifold_errors
                                   ? r.accuracy->manifold_errors->kept_max
                                   : kMissing;
-          write_data_line(o, s, {1000.0 * r.distance, r.timing->narrowphase_ratio(),
-                                 r.timing->step_ratio(), 1000.0 * kept});
+          write_data_line(o, s,
+                          {1000.0 * r.distance, r.timing->narrowphase_ratio(),
+                           r.timing->step_ratio(), 1000.0 * kept});
         }
         o << "\n\n";
       }
@@ -163,7 +167,8 @@ class RecyclingSection : public CompareSection {
          "manifolds with points where the fresh one has none, **depth** and **normal error** "
          "against the exact answer on pairs whose cores penetrate. `floor` is `dyop` never "
          "recomputing after its first answer: what Box2D 2.4's own contact walk costs, the "
-         "limit of any narrow phase plugged into it (its world is wrong; only its times count).\n\n";
+         "limit of any narrow phase plugged into it (its world is wrong; only its times "
+         "count).\n\n";
     sweep_records(rows_).write_markdown(o);
     o << '\n';
     charts.image(o, "recycling", "recycling: narrow phase and step against distance, and error");

@@ -42,7 +42,7 @@ std::vector<Problem> write_report(const Comparison& comparison) {
       o << report::csv_row(m) << ',' << (r ? fmt("%.6g", *r) : "") << '\n';
     }
   });
-  for (const auto& snapshot : run.snapshots) {  // not a structured binding: C++17 lambdas
+  for (const auto& snapshot : run.snapshots) {     // not a structured binding: C++17 lambdas
     dir.write("scene_" + snapshot.first + ".svg",  // cannot capture those (clang refuses)
               [&](std::ostream& o) { report::write_svg(snapshot.second, o); });
   }

@@ -73,9 +73,9 @@ std::vector<std::unique_ptr<CompareSection>> make_compare_sections();
 
 /// `dyop compare`'s whole run: the main table and every section.
 struct Comparison {
-  experiments::CompareRun main;  ///< every scene under every backend
+  experiments::CompareRun main;                           ///< every scene under every backend
   std::vector<std::unique_ptr<CompareSection>> sections;  ///< `make_compare_sections()`, run
-  double seconds = 0;  ///< wall time of the whole run
+  double seconds = 0;                                     ///< wall time of the whole run
 
   /// The section of type `S`, or nullptr (for tests that look at one section's records).
   template <class S>

@@ -188,7 +188,8 @@ class SkipSection : public CompareSection {
     if (breakdown) {
       out << "\nEach skip alone against `none` (`" << box2d::name(skip_target_backend)
           << "`; `lin-canny-cache` changes nothing but `lin-canny`):\n\n"
-          << "| scene | skips | ns/pair | × none | step ms | × none | hashes equal | skipped bounds "
+          << "| scene | skips | ns/pair | × none | step ms | × none | hashes equal | skipped "
+             "bounds "
              "| skipped warm-axis |\n"
           << "|---|---|--:|--:|--:|--:|---|--:|--:|\n";
       for (const SkipMeasurement& m : measurements_) {
@@ -199,8 +200,9 @@ class SkipSection : public CompareSection {
         for (const SceneMetrics* r : rows) {
           out << "| " << r->scene << " | " << (r->skip_config ? skip_argument(*r->skip_config) : "")
               << " | " << fmt("%.1f", r->narrowphase_ns_per_pair) << " | "
-              << fmt("%.2f", narrowphase_ratio(*r, m.off)) << " | " << fmt("%.3g", r->step_ms_median)
-              << " | " << fmt("%.2f", r->step_ms_median / m.off.step_ms_median) << " | "
+              << fmt("%.2f", narrowphase_ratio(*r, m.off)) << " | "
+              << fmt("%.3g", r->step_ms_median) << " | "
+              << fmt("%.2f", r->step_ms_median / m.off.step_ms_median) << " | "
               << hashes_equal(*r, m.off) << " | " << skipped(*r, box2d::Skip::Bounds) << " | "
               << skipped(*r, box2d::Skip::WarmAxis) << " |\n";
         }
@@ -266,22 +268,25 @@ class SkipSection : public CompareSection {
       }
       for (const SceneMetrics* r : on) {
         const std::uint64_t of = r->plugin_evaluations.value_or(0);
-        std::vector<Value> row = {
-            Value::text(r->scene), Value::text(name(r->runner)), Value::count(r->steps),
-            Value::text(r->skip_config ? skip_argument(*r->skip_config) : ""),
-            Value::count(static_cast<std::int64_t>(r->contact_updates)),
-            Value::count(static_cast<std::int64_t>(m.off.contact_updates)),
-            Value::number(r->narrowphase_ns_per_pair, "%.1f"),
-            Value::number(m.off.narrowphase_ns_per_pair, "%.1f"),
-            Value::number(narrowphase_ratio(*r, m.off), "%.2f"),
-            Value::number(r->narrowphase_ms_total, "%.3g"),
-            Value::number(m.off.narrowphase_ms_total, "%.3g"),
-            Value::number(r->step_ms_median, "%.3g"), Value::number(m.off.step_ms_median, "%.3g"),
-            Value::number(r->step_ms_median / m.off.step_ms_median, "%.2f"),
-            Value::text(hash_hex(r->hash)), Value::text(hash_hex(m.off.hash)),
-            Value::text(r->hash == m.off.hash ? "true" : "false"),
-            Value::text(hashes_equal(*r, m.off)),
-            Value::count(static_cast<std::int64_t>(of))};
+        std::vector<Value> row = {Value::text(r->scene),
+                                  Value::text(name(r->runner)),
+                                  Value::count(r->steps),
+                                  Value::text(r->skip_config ? skip_argument(*r->skip_config) : ""),
+                                  Value::count(static_cast<std::int64_t>(r->contact_updates)),
+                                  Value::count(static_cast<std::int64_t>(m.off.contact_updates)),
+                                  Value::number(r->narrowphase_ns_per_pair, "%.1f"),
+                                  Value::number(m.off.narrowphase_ns_per_pair, "%.1f"),
+                                  Value::number(narrowphase_ratio(*r, m.off), "%.2f"),
+                                  Value::number(r->narrowphase_ms_total, "%.3g"),
+                                  Value::number(m.off.narrowphase_ms_total, "%.3g"),
+                                  Value::number(r->step_ms_median, "%.3g"),
+                                  Value::number(m.off.step_ms_median, "%.3g"),
+                                  Value::number(r->step_ms_median / m.off.step_ms_median, "%.2f"),
+                                  Value::text(hash_hex(r->hash)),
+                                  Value::text(hash_hex(m.off.hash)),
+                                  Value::text(r->hash == m.off.hash ? "true" : "false"),
+                                  Value::text(hashes_equal(*r, m.off)),
+                                  Value::count(static_cast<std::int64_t>(of))};
         for (int k = 0; k < box2d::skip_count; ++k) {
           const std::uint64_t n = skipped(*r, static_cast<box2d::Skip>(k));
           row.push_back(Value::count(static_cast<std::int64_t>(n)));

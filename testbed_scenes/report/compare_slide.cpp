@@ -34,9 +34,8 @@ class SlideSection : public CompareSection {
         parts_.back().runs.push_back(
             experiments::run_slide(r, steps, c.options.seed, c.options.skips, scene));
         c.progress << "[" << scene << "] " << scenes::name(r) << ", " << steps
-                   << " steps, paths recorded: "
-                   << fixed(c.elapsed() - start, 2) << " s (total " << fixed(c.elapsed(), 1)
-                   << " s)\n"
+                   << " steps, paths recorded: " << fixed(c.elapsed() - start, 2) << " s (total "
+                   << fixed(c.elapsed(), 1) << " s)\n"
                    << std::flush;
       }
     }
@@ -75,7 +74,8 @@ class SlideSection : public CompareSection {
       charts.image(o, p.scene + "_paths",
                    "each slider's height against distance travelled, per runner");
       o << "Final states side by side (lanes top to bottom in the order of the table above):\n\n|";
-      for (const SlideRun& r : p.runs) o << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
+      for (const SlideRun& r : p.runs)
+        o << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
       o << "\n|";
       for (std::size_t i = 0; i < p.runs.size(); ++i) o << "---|";
       o << "\n|";
@@ -90,8 +90,8 @@ class SlideSection : public CompareSection {
   std::string files() const override {
     std::string out;
     for (const Part& p : parts_) {
-      out += std::string(out.empty() ? "" : ", ") + "`" + p.scene + ".csv` (every slider under every runner), `" +
-             p.scene + "_*.svg` (final states)";
+      out += std::string(out.empty() ? "" : ", ") + "`" + p.scene +
+             ".csv` (every slider under every runner), `" + p.scene + "_*.svg` (final states)";
     }
     return out;
   }
@@ -170,7 +170,8 @@ class SlideSection : public CompareSection {
     summary.write_markdown(out);
     if (p.runs.empty() || !p.runs.front().metrics.slide) return;
     out << "\n| slider |";
-    for (const SlideRun& r : p.runs) out << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
+    for (const SlideRun& r : p.runs)
+      out << ' ' << std::string(scenes::name(r.metrics.runner)) << " |";
     out << "\n|---|";
     for (std::size_t i = 0; i < p.runs.size(); ++i) out << "---|";
     out << '\n';
@@ -203,12 +204,15 @@ class SlideSection : public CompareSection {
       const scenes::SceneMetrics& m = r.metrics;
       if (!m.slide) continue;
       for (const scenes::SliderFigures& f : m.slide->sliders) {
-        out.add({Value::text(scenes::name(m.runner)), Value::text(f.body), Value::text(f.ground),
-                 Value::text(f.rolling ? "true" : "false"), Value::count(m.steps),
-                 Value::text(!m.runner ? "" : internal_edges_ ? "true" : "false"),
-                 Value::number(f.max_vertical_speed, "%.3f"),
-                 Value::number(f.max_angular_speed, "%.2f"), Value::number(f.travel, "%.3f"),
-                 m.top_displacement ? Value::number(*m.top_displacement, "%.2e") : Value::text("")});
+        out.add(
+            {Value::text(scenes::name(m.runner)), Value::text(f.body), Value::text(f.ground),
+             Value::text(f.rolling ? "true" : "false"), Value::count(m.steps),
+             Value::text(!m.runner         ? ""
+                         : internal_edges_ ? "true"
+                                           : "false"),
+             Value::number(f.max_vertical_speed, "%.3f"),
+             Value::number(f.max_angular_speed, "%.2f"), Value::number(f.travel, "%.3f"),
+             m.top_displacement ? Value::number(*m.top_displacement, "%.2e") : Value::text("")});
       }
     }
     return out;
@@ -222,8 +226,8 @@ class SlideSection : public CompareSection {
     dir.write(data, [&](std::ostream& o) {
       for (const SlideRun& r : p.runs) {
         for (const experiments::SliderPath& p : r.paths) {
-          o << "# " << std::string(scenes::name(r.metrics.runner)) << ": " << p.body << " on " << p.ground
-            << ": x height\n";
+          o << "# " << std::string(scenes::name(r.metrics.runner)) << ": " << p.body << " on "
+            << p.ground << ": x height\n";
           for (std::size_t i = 0; i < p.x.size(); ++i) {
             o << fmt("%.6g", p.x[i]) << ' ' << fmt("%.6g", p.height[i]) << '\n';
             low = std::min(low, p.height[i]);

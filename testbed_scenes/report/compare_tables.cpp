@@ -22,12 +22,13 @@ void write_compare_table(const CompareRun& run, std::ostream& out) {
       top = fmt("%.3f", *m.top_displacement) +
             (*m.top_displacement <= standing_displacement ? " (stands)" : " (FELL)");
     }
-    out << "| " << m.scene << " | " << name(m.runner) << " | " << m.steps << " | " << m.triangle_pairs
-        << " | " << fmt("%.3g", m.step_ms_median) << " | " << fmt("%.0f", m.narrowphase_ns_per_pair)
-        << " | " << (ratio ? fmt("%.2f", *ratio) : "–") << " | " << metres(m.max_penetration)
-        << " | " << metres(m.mean_penetration) << " | " << metres(m.pd_error_max) << " | "
-        << metres(m.pd_error_mean) << " | " << m.misclassified << " | " << top << " | "
-        << fmt("%.3g", m.kinetic_energy_final) << " | " << (m.nan_detected ? "YES" : "no") << " | "
+    out << "| " << m.scene << " | " << name(m.runner) << " | " << m.steps << " | "
+        << m.triangle_pairs << " | " << fmt("%.3g", m.step_ms_median) << " | "
+        << fmt("%.0f", m.narrowphase_ns_per_pair) << " | " << (ratio ? fmt("%.2f", *ratio) : "–")
+        << " | " << metres(m.max_penetration) << " | " << metres(m.mean_penetration) << " | "
+        << metres(m.pd_error_max) << " | " << metres(m.pd_error_mean) << " | " << m.misclassified
+        << " | " << top << " | " << fmt("%.3g", m.kinetic_energy_final) << " | "
+        << (m.nan_detected ? "YES" : "no") << " | "
         << (m.fallbacks ? std::to_string(*m.fallbacks) : "–") << " |\n";
   }
 }

@@ -34,7 +34,8 @@ class ThreadSection : public CompareSection {
   }
 
   void write_files(ReportDirectory& dir, Charts&) const override {
-    dir.write("threads.csv", [&](std::ostream& o) { thread_scaling_records(records_).write_csv(o); });
+    dir.write("threads.csv",
+              [&](std::ostream& o) { thread_scaling_records(records_).write_csv(o); });
   }
 
   void write_markdown(std::ostream& o, const Charts&) const override {

@@ -33,9 +33,9 @@ class ViewerSection : public CompareSection {
     out_dir_ = c.options.out_dir;
     for (const scenes::SceneInfo* s : c.scenes) {
       const double start = c.elapsed();
-      const experiments::LockstepRecording r = experiments::record_lockstep(
-          s->name, {std::nullopt, box2d::Backend::Dyop}, c.steps(*s), c.options.seed,
-          {c.options.skips, c.options.skips});
+      const experiments::LockstepRecording r =
+          experiments::record_lockstep(s->name, {std::nullopt, box2d::Backend::Dyop}, c.steps(*s),
+                                       c.options.seed, {c.options.skips, c.options.skips});
       ViewerPage page{s->name, r.steps, {}, {}, {}, {}};
       std::ostringstream html;
       write_viewer_page(r, html);
@@ -49,9 +49,9 @@ class ViewerSection : public CompareSection {
         }
       }
       pages_.push_back(std::move(page));
-      c.progress << "[viewer] " << s->name << ", " << r.steps << " steps: "
-                 << fmt("%.2f", c.elapsed() - start) << " s (total " << fmt("%.1f", c.elapsed())
-                 << " s)\n"
+      c.progress << "[viewer] " << s->name << ", " << r.steps
+                 << " steps: " << fmt("%.2f", c.elapsed() - start) << " s (total "
+                 << fmt("%.1f", c.elapsed()) << " s)\n"
                  << std::flush;
     }
   }

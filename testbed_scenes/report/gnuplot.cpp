@@ -37,9 +37,10 @@ std::optional<Problem> run_gnuplot(const std::string& script, const std::string&
     if (!file) return not_written(script_path);
   }
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-    return Problem{ProblemKind::ChartNotDrawn,
-                   "gnuplot not found (Debian package gnuplot-nox): chart skipped, script kept at " +
-                       script_path};
+    return Problem{
+        ProblemKind::ChartNotDrawn,
+        "gnuplot not found (Debian package gnuplot-nox): chart skipped, script kept at " +
+            script_path};
   }
   const std::string command = "gnuplot " + shell_quote(script_path) + " 2>&1";
   if (std::system(command.c_str()) != 0) {

@@ -25,8 +25,9 @@ Records scaling_records(const std::vector<ScalingRecord>& records) {
                {"fallbacks", "fallbacks", "fallb", 5},
                {"nan_detected", "NaN", "nan", 3}});
   for (const ScalingRecord& r : records) {
-    out.add({Value::text(scenes::name(r.runner)), Value::count(r.falling), Value::count(r.triangles),
-             Value::count(r.steps), Value::number(r.step_ms_median, "%.3f"),
+    out.add({Value::text(scenes::name(r.runner)), Value::count(r.falling),
+             Value::count(r.triangles), Value::count(r.steps),
+             Value::number(r.step_ms_median, "%.3f"),
              Value::number(r.narrowphase_ms_per_step, "%.3f"),
              Value::number(r.narrowphase_ns_per_pair, "%.1f"),
              Value::number(r.pairs_per_step, "%.0f"), Value::number(r.ratio_vs_box2d, "%.3f"),
@@ -37,8 +38,7 @@ Records scaling_records(const std::vector<ScalingRecord>& records) {
   return out;
 }
 
-std::string write_scaling_outputs(const std::vector<ScalingRecord>& records,
-                                  ReportDirectory& dir) {
+std::string write_scaling_outputs(const std::vector<ScalingRecord>& records, ReportDirectory& dir) {
   dir.write("scaling.csv", [&](std::ostream& o) { scaling_records(records).write_csv(o); });
   // One data block per runner (gnuplot's `index`), in the order of the records.
   std::vector<scenes::Runner> runners;

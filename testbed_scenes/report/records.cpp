@@ -127,9 +127,8 @@ void Records::write_table(std::ostream& out) const {
 }
 
 void Records::write_csv(std::ostream& out) const {
-  write_lines(out, {where::csv, "", ",", "", false}, [](const Column& c, const Value* v) {
-    return v != nullptr ? v->csv() : c.key;
-  });
+  write_lines(out, {where::csv, "", ",", "", false},
+              [](const Column& c, const Value* v) { return v != nullptr ? v->csv() : c.key; });
 }
 
 void Records::write_markdown(std::ostream& out) const {

@@ -50,7 +50,8 @@ Records stream_records(const std::vector<StreamResult>& results) {
     for (const StreamRunnerResult& x : r.runners) {
       const experiments::StreamAgreement& a = x.agreement;
       auto percent = [](double v) { return Value::number(100 * v, "%.1f"); };
-      out.add({Value::text(r.scene), Value::count(r.steps),
+      out.add({Value::text(r.scene),
+               Value::count(r.steps),
                Value::count(static_cast<std::int64_t>(r.contacts)),
                Value::count(static_cast<std::int64_t>(r.calls)),
                Value::count(static_cast<std::int64_t>(r.world_evaluations)),
@@ -58,28 +59,31 @@ Records stream_records(const std::vector<StreamResult>& results) {
                Value::count(static_cast<std::int64_t>(r.triangle_calls)),
                percent(share(r.triangle_calls, r.calls)),
                Value::count(static_cast<std::int64_t>(r.calls_with_points)),
-               percent(share(r.calls_with_points, r.calls)), Value::text(scenes::name(x.runner)),
-               Value::number(x.ns_per_call, "%.1f"), Value::number(x.ratio_vs_box2d_own, "%.3f"),
+               percent(share(r.calls_with_points, r.calls)),
+               Value::text(scenes::name(x.runner)),
+               Value::number(x.ns_per_call, "%.1f"),
+               Value::number(x.ratio_vs_box2d_own, "%.3f"),
                Value::count(static_cast<std::int64_t>(a.same_point_count)),
                Value::count(static_cast<std::int64_t>(a.calls - a.same_point_count)),
                Value::count(static_cast<std::int64_t>(a.both_points)),
                Value::count(static_cast<std::int64_t>(a.same_face)),
                Value::count(static_cast<std::int64_t>(a.both_points - a.same_face)),
                Value::number(100 * face_share(a), "%.3f%%"),
-               Value::number(a.normal_angle_max, "%.2e"), Value::metres(a.separation_diff_max)});
+               Value::number(a.normal_angle_max, "%.2e"),
+               Value::metres(a.separation_diff_max)});
     }
   }
   return out;
 }
 
-std::string write_stream_outputs(const std::vector<StreamResult>& results,
-                                 ReportDirectory& dir) {
+std::string write_stream_outputs(const std::vector<StreamResult>& results, ReportDirectory& dir) {
   dir.write("streams.csv", [&](std::ostream& o) { stream_records(results).write_csv(o); });
   // One row per scene, one column per plug-in backend (box2d-own is 1 by definition).
   const std::size_t backends = results.empty() ? 0 : results.front().runners.size() - 1;
   dir.write("streams.dat", [&](std::ostream& o) {
     o << "# scene";
-    for (std::size_t k = 0; k < backends; ++k) o << ' ' << scenes::name(results.front().runners[k].runner);
+    for (std::size_t k = 0; k < backends; ++k)
+      o << ' ' << scenes::name(results.front().runners[k].runner);
     o << " (ratio of ns per call to box2d-own)\n";
     for (const StreamResult& r : results) {
       std::vector<double> ratios;
@@ -97,10 +101,12 @@ std::string write_stream_outputs(const std::vector<StreamResult>& results,
             "plot ";
   for (std::size_t k = 0; k < backends; ++k) {
     script << (k ? ", \\\n     " : "") << dir.quoted("streams.dat") << " using " << k + 2
-           << (k == 0 ? ":xtic(1)" : "") << " title '" << scenes::name(results.front().runners[k].runner) << "'";
+           << (k == 0 ? ":xtic(1)" : "") << " title '"
+           << scenes::name(results.front().runners[k].runner) << "'";
   }
   script << "\n";
-  if (backends > 0) dir.chart("streams", "svg size 1100,500 dynamic background rgb 'white'", script.str());
+  if (backends > 0)
+    dir.chart("streams", "svg size 1100,500 dynamic background rgb 'white'", script.str());
 
   std::ostringstream md;
   md << "## Contact streams\n\nEvery polygon-pair contact update of each Box2D scene's `Collide`, "

@@ -36,9 +36,12 @@ Records stress_records(const std::vector<StressRecord>& records) {
   for (const StressRecord& r : records) {
     std::vector<Value> row = {Value::text(workloads::name(r.precision)),
                               Value::text(workloads::name(r.cls)),
-                              Value::text(adapters::name(r.method)), Value::count(r.pairs),
-                              Value::count(r.rejected),     Value::number(r.err_max, "%.2e"),
-                              Value::number(r.err_p99, "%.2e"), Value::count(r.nonfinite),
+                              Value::text(adapters::name(r.method)),
+                              Value::count(r.pairs),
+                              Value::count(r.rejected),
+                              Value::number(r.err_max, "%.2e"),
+                              Value::number(r.err_p99, "%.2e"),
+                              Value::count(r.nonfinite),
                               Value::count(r.misclassified)};
     for (int k = 0; k < invariance_count; ++k) row.push_back(Value::count(r.invariance[k]));
     row.push_back(Value::count(r.invalid_by_design));
@@ -63,7 +66,8 @@ void write_markdown(const std::vector<StressRecord>& records, std::ostream& out)
       by_method[method][workloads::name(r.cls)] = &r;
     }
     if (methods.empty()) continue;
-    out << "\nMax (99th percentile) |separation error| / pair size, " << precision << ":\n\n| method |";
+    out << "\nMax (99th percentile) |separation error| / pair size, " << precision
+        << ":\n\n| method |";
     for (const std::string& c : classes) out << ' ' << c << " |";
     out << "\n|---|";
     for (std::size_t i = 0; i < classes.size(); ++i) out << "---|";
@@ -98,8 +102,8 @@ void write_markdown(const std::vector<StressRecord>& records, std::ostream& out)
       }
       out << "| " << m << " | " << sum.pairs << " | " << sum.rejected << " | " << sum.nonfinite
           << " | " << sum.misclassified << " | " << sum.invariance[0] << " / " << sum.invariance[1]
-          << " / " << sum.invariance[2] << " / " << sum.invariance[3] << " | " << sum.invalid_by_design << " | "
-          << sum.invalid << " |\n";
+          << " / " << sum.invariance[2] << " / " << sum.invariance[3] << " | "
+          << sum.invalid_by_design << " | " << sum.invalid << " |\n";
     }
   }
 }

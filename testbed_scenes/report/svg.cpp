@@ -8,14 +8,17 @@
 namespace dyop::report {
 namespace {
 
-using scenes::DrawShape;
 using scenes::Drawing;
+using scenes::DrawShape;
 
 const char* fill_of(DrawShape::Role r) {
   switch (r) {
-    case DrawShape::Role::Static: return "#b0b0b0";
-    case DrawShape::Role::Kinematic: return "#7fa7e0";
-    case DrawShape::Role::Dynamic: return "#f3a35b";
+    case DrawShape::Role::Static:
+      return "#b0b0b0";
+    case DrawShape::Role::Kinematic:
+      return "#7fa7e0";
+    case DrawShape::Role::Dynamic:
+      return "#f3a35b";
   }
   return "#000000";
 }
@@ -24,11 +27,20 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;

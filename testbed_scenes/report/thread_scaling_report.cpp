@@ -31,8 +31,7 @@ void write_thread_scaling_table(const std::vector<ThreadScalingRecord>& records,
 
 std::string write_thread_scaling_outputs(const std::vector<ThreadScalingRecord>& records,
                                          const std::string& scene, ReportDirectory& dir) {
-  dir.write("threads.csv",
-            [&](std::ostream& o) { thread_scaling_records(records).write_csv(o); });
+  dir.write("threads.csv", [&](std::ostream& o) { thread_scaling_records(records).write_csv(o); });
   return thread_scaling_markdown(records, scene);
 }
 

@@ -59,7 +59,15 @@ class Varints {
 // The recording's streams, in the order the page reads their lengths: each holds one kind of
 // number, so that deflate finds like next to like.
 enum Stream : int {
-  PosePosition, PoseAngle, Structure, Normal, LocalPoint, Clip, Separation, Key, stream_count
+  PosePosition,
+  PoseAngle,
+  Structure,
+  Normal,
+  LocalPoint,
+  Clip,
+  Separation,
+  Key,
+  stream_count
 };
 
 // A number of a contact, and the stream it goes to. A separation is predicted from the
@@ -102,9 +110,9 @@ double predicted_separation(ViewManifold::Reference reference, const std::vector
                             std::size_t first, std::size_t at, const Placement& a,
                             const Placement& b, double ra, double rb) {
   const std::array<double, 2> lp = {double(q[first + 1]) * local_quantum,
-                                     double(q[first + 2]) * local_quantum};
+                                    double(q[first + 2]) * local_quantum};
   const std::array<double, 2> local = {double(q[at]) * local_quantum,
-                                        double(q[at + 1]) * local_quantum};
+                                       double(q[at + 1]) * local_quantum};
   if (reference == ViewManifold::Reference::Circles) {
     const std::array<double, 2> pa = a.apply(lp[0], lp[1]), pb = b.apply(local[0], local[1]);
     const double dx = pb[0] - pa[0], dy = pb[1] - pa[1];
@@ -197,10 +205,10 @@ class RunnerEncoder {
         std::int64_t predicted = 0;
         if (v[i].stream == Separation) {
           const ViewManifold& m = first == 0 ? c.manifold : c.box2d;
-          predicted = round_half_up(predicted_separation(m.reference, kept, first, i - 2,
-                                                         placed[fa.body], placed[fb.body],
-                                                         fa.radius, fb.radius) /
-                                    separation_quantum);
+          predicted =
+              round_half_up(predicted_separation(m.reference, kept, first, i - 2, placed[fa.body],
+                                                 placed[fb.body], fa.radius, fb.radius) /
+                            separation_quantum);
         } else if (before != previous_.end() && i < before->second.size()) {
           predicted = before->second[i];
         }
@@ -230,8 +238,7 @@ std::string deflate(const std::string& raw) {
 }
 
 std::string base64(const std::string& bytes) {
-  static const char alphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   for (std::size_t i = 0; i < bytes.size(); i += 3) {

@@ -37,9 +37,7 @@ b2Body* add_random_triangle(World& world, workloads::Random& rng, const b2Vec2& 
                             double radius);
 
 /// Up to ±`amount` metres, for placement jitter.
-inline float jitter(workloads::Random& rng, double amount) {
-  return rng.uniformf(-amount, amount);
-}
+inline float jitter(workloads::Random& rng, double amount) { return rng.uniformf(-amount, amount); }
 
 /// The sliding scenes' materials: frictionless for the gliding bodies and their grounds, friction
 /// 0.6 (as every other scene) for the wheel, its ground and resting bodies.

@@ -98,7 +98,6 @@ const SceneInfo* find_scene(std::string_view name) {
   return e ? &e->info : nullptr;
 }
 
-
 std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, std::uint64_t seed,
                                   const box2d::Config& skips) {
   const Entry* e = find_entry(name);
@@ -115,11 +114,10 @@ std::unique_ptr<Scene> make_scene(std::string_view name, const Runner& runner, s
 std::unique_ptr<Scene> make_rain(int falling, const Runner& runner, std::uint64_t seed,
                                  const box2d::Config& skips) {
   if (falling < 1) throw std::invalid_argument("rain needs at least one falling triangle");
-  return std::make_unique<WorldScene>(
-      "rain", runner, seed, skips,
-      [falling](World& world, workloads::Random& rng) {
-        return detail::build_rain_of(world, rng, falling);
-      });
+  return std::make_unique<WorldScene>("rain", runner, seed, skips,
+                                      [falling](World& world, workloads::Random& rng) {
+                                        return detail::build_rain_of(world, rng, falling);
+                                      });
 }
 
 SceneMetrics run_scene(std::string_view name, const Runner& runner, int steps, std::uint64_t seed,

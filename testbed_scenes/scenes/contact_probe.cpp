@@ -123,7 +123,8 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
 void ContactProbe::measure_penetration(const b2World& world, PenetrationTally& depths) {
   for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
     if (!c->IsTouching()) continue;
-    if (const std::optional<ExactPair> pair = exact_pair(*c)) depths.add(sat(pair->a, pair->b).depth);
+    if (const std::optional<ExactPair> pair = exact_pair(*c))
+      depths.add(sat(pair->a, pair->b).depth);
   }
 }
 

@@ -7,8 +7,8 @@
 /// (`b2WorldManifold`: a point's distance from the reference face, skins left out), in A's body
 /// frame in double:
 /// - what keeping costs: |the manifold's deepest separation − that of the manifold the runner
-///   computes afresh for the same pose| (`box2d::measurement::evaluate_afresh`), and how many kept manifolds had points where the fresh one has
-///   none;
+///   computes afresh for the same pose| (`box2d::measurement::evaluate_afresh`), and how many kept
+///   manifolds had points where the fresh one has none;
 /// - for a pair whose cores penetrate exactly (`sat` in double on the float shapes, B moved into
 ///   A's frame in double: `exact_pair`), the depth error |deepest separation − exact separation|
 ///   and the normal error: how much deeper the pair overlaps along the manifold's normal than the

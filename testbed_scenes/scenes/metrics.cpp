@@ -68,10 +68,11 @@ SlideFigures summarize_sliders(std::vector<SliderFigures> sliders) {
 }
 
 bool all_finite(const SceneMetrics& m) {
-  std::vector<double> values = {
-      m.step_ms_median,  m.step_ms_total,        m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
-      m.max_penetration, m.mean_penetration,     m.pd_error_max,
-      m.pd_error_mean,   m.kinetic_energy_final, m.top_displacement.value_or(0.0)};
+  std::vector<double> values = {m.step_ms_median,       m.step_ms_total,
+                                m.narrowphase_ms_total, m.narrowphase_ns_per_pair,
+                                m.max_penetration,      m.mean_penetration,
+                                m.pd_error_max,         m.pd_error_mean,
+                                m.kinetic_energy_final, m.top_displacement.value_or(0.0)};
   if (m.slide) {
     for (const SliderFigures& s : m.slide->sliders) {
       values.insert(values.end(), {s.max_vertical_speed, s.max_angular_speed, s.travel});

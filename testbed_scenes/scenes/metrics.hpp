@@ -42,8 +42,8 @@ struct SliderFigures {
 struct SlideFigures {
   /// Largest |v_y| over the sliding (not rolling) bodies (m/s): 0 for a glide.
   double max_vertical_speed = 0;
-  double max_angular_speed = 0;  ///< largest |ω| over the same bodies (rad/s): 0 for a glide
-  double min_travel = 0;         ///< smallest `travel` over the same bodies (1: a glide)
+  double max_angular_speed = 0;        ///< largest |ω| over the same bodies (rad/s): 0 for a glide
+  double min_travel = 0;               ///< smallest `travel` over the same bodies (1: a glide)
   std::vector<SliderFigures> sliders;  ///< every slider, rolling ones included
 };
 

@@ -34,7 +34,9 @@ WorldBuild build_mixed(World& world, workloads::Random& rng) {
     const b2Vec2 p(-8.1f + 1.8f * (k % 10), 1.5f + 1.8f * (k / 10));
     switch (k % 4) {
       case 0:
-      case 2: add_random_triangle(world, rng, p, rng.uniform(0.25, 0.7)); break;
+      case 2:
+        add_random_triangle(world, rng, p, rng.uniform(0.25, 0.7));
+        break;
       case 1: {
         // One draw per statement: the order of a call's arguments is unspecified.
         const float hx = rng.uniformf(0.2, 0.45);

@@ -18,9 +18,7 @@ PairCall pair_call(const adapters::NarrowPhase& p) {
   return {adapters::pair_function<float>(p), p.method && p.method->warm};
 }
 
-int pair_index(int i, int j) {
-  return i * (2 * type_count - i - 1) / 2 + (j - i - 1);
-}
+int pair_index(int i, int j) { return i * (2 * type_count - i - 1) / 2 + (j - i - 1); }
 
 double time_jobs(const std::vector<Job>& jobs, const PairCall& call, std::vector<PairState>& caches,
                  const std::vector<PairState>& start) {

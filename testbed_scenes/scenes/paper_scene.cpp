@@ -15,7 +15,10 @@ double area_of(const TriangleType& t) {
 class PaperScene : public Scene {
  public:
   PaperScene(box2d::Backend backend, std::uint64_t seed)
-      : backend_(backend), seed_(seed), call_(pair_call(narrow_phase_of(backend))), caches_(pair_count) {}
+      : backend_(backend),
+        seed_(seed),
+        call_(pair_call(narrow_phase_of(backend))),
+        caches_(pair_count) {}
 
   void step() override {
     const Frame f = frame_at(time_of(steps_));

@@ -21,9 +21,7 @@ inline constexpr const char* box2d_own = "box2d-own";
 using Runner = std::optional<box2d::Backend>;
 
 /// `box2d::name(*runner)`, or `box2d_own`.
-inline const char* name(const Runner& runner) {
-  return runner ? box2d::name(*runner) : box2d_own;
-}
+inline const char* name(const Runner& runner) { return runner ? box2d::name(*runner) : box2d_own; }
 
 /// The runner spelt `s` (a backend's name or `box2d_own`), or nothing.
 inline std::optional<Runner> parse_runner(std::string_view s) {

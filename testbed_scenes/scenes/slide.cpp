@@ -41,9 +41,12 @@ constexpr double kJitter = 0.001;  // m, launch position noise from the seed
 
 const char* ground_name(const Lane& lane) {
   switch (lane.cells) {
-    case Cells::OnePiece: return "one-piece";
-    case Cells::Diagonal: return lane.cell == 1 ? "diagonal-1m" : "diagonal-0.25m";
-    default: return "fan-0.25m";
+    case Cells::OnePiece:
+      return "one-piece";
+    case Cells::Diagonal:
+      return lane.cell == 1 ? "diagonal-1m" : "diagonal-0.25m";
+    default:
+      return "fan-0.25m";
   }
 }
 
@@ -52,11 +55,14 @@ void add_ground(World& world, const Lane& lane, float top, const Material& mater
   b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, top));
   const float x1 = kStart + kLength;
   switch (lane.cells) {
-    case Cells::OnePiece: add_triangle_block(ground, kStart, -1, x1, 0, kLength, material); return;
+    case Cells::OnePiece:
+      add_triangle_block(ground, kStart, -1, x1, 0, kLength, material);
+      return;
     case Cells::Diagonal:
       add_triangle_block(ground, kStart, -2 * lane.cell, x1, 0, lane.cell, material);
       return;
-    case Cells::Fan: break;
+    case Cells::Fan:
+      break;
   }
   const int columns = static_cast<int>(std::lround(kLength / lane.cell));
   for (int row = 0; row < 2; ++row) {

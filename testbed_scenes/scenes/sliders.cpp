@@ -27,8 +27,8 @@ b2Body* add_l(World& world, const b2Vec2& corner) {
 b2Body* add_wheel(World& world, float x, float top) {
   constexpr double kPi = 3.14159265358979323846;
   const double half_angle = kPi / kWheelSides;
-  b2Body* body = add_body(world, b2_dynamicBody,
-                          b2Vec2(x, top + float(kWheelRadius * std::cos(half_angle))));
+  b2Body* body =
+      add_body(world, b2_dynamicBody, b2Vec2(x, top + float(kWheelRadius * std::cos(half_angle))));
   auto rim = [&](int i) {
     const double a = -kPi / 2 - half_angle + 2 * half_angle * i;
     return b2Vec2(float(kWheelRadius * std::cos(a)), float(kWheelRadius * std::sin(a)));

@@ -43,7 +43,9 @@ WorldBuild build(World& world, workloads::Random& rng, const b2Vec2& offset) {
       case 3:  // 1.2 to 3 cm radius: edges of 1 to 5 cm
         add_random_triangle(world, rng, offset + p, rng.uniform(0.012, 0.03));
         break;
-      default: add_random_triangle(world, rng, offset + p, rng.uniform(0.2, 0.5)); break;
+      default:
+        add_random_triangle(world, rng, offset + p, rng.uniform(0.2, 0.5));
+        break;
     }
   }
   return {};

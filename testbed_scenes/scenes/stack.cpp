@@ -39,9 +39,15 @@ WorldBuild build_stack_concave(World& world, workloads::Random& rng) {
       const float angle = rng.uniformf(0, 6.283185307179586);
       const b2Rot q(angle);
       switch ((r * kColumns + c) % 3) {
-        case 0: add_l_shape(world, centre - b2Mul(q, b2Vec2(1.0f, 1.0f)), angle); break;
-        case 1: add_u_shape(world, centre - b2Mul(q, b2Vec2(1.5f, 1.0f)), angle); break;
-        default: add_star(world, centre, angle); break;
+        case 0:
+          add_l_shape(world, centre - b2Mul(q, b2Vec2(1.0f, 1.0f)), angle);
+          break;
+        case 1:
+          add_u_shape(world, centre - b2Mul(q, b2Vec2(1.5f, 1.0f)), angle);
+          break;
+        default:
+          add_star(world, centre, angle);
+          break;
       }
     }
   }

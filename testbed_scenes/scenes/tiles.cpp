@@ -30,9 +30,12 @@ struct Ground {
 };
 
 constexpr Ground kGrounds[] = {
-    {"one-body", Layout::OneBody},          {"tiles", Layout::Tiles},
-    {"chunks-8x8", Layout::Chunks},         {"t-junctions", Layout::TJunctions},
-    {"t-junction-tiles", Layout::TJunctionTiles}, {"changing-tiles", Layout::Changing},
+    {"one-body", Layout::OneBody},
+    {"tiles", Layout::Tiles},
+    {"chunks-8x8", Layout::Chunks},
+    {"t-junctions", Layout::TJunctions},
+    {"t-junction-tiles", Layout::TJunctionTiles},
+    {"changing-tiles", Layout::Changing},
 };
 
 struct Launch {
@@ -47,9 +50,9 @@ constexpr float kTile = 0.5f;  // m, side of a tile
 // Every lane's ground runs from kStart over kColumns tiles: 6 s at 6 m/s (the full run) from x = 0.
 constexpr float kStart = -2.0f;
 constexpr int kColumns = 80;
-constexpr int kRows = 2;         // tiles deep (chunks: kChunk)
-constexpr int kChunk = 8;        // tiles on a chunk's side
-constexpr float kLaneGap = 6.0f;  // m between lane tops: a chunk ground is 4 m deep
+constexpr int kRows = 2;           // tiles deep (chunks: kChunk)
+constexpr int kChunk = 8;          // tiles on a chunk's side
+constexpr float kLaneGap = 6.0f;   // m between lane tops: a chunk ground is 4 m deep
 constexpr double kJitter = 0.001;  // m, launch position noise from the seed
 // m: sliders start this far past a junction (their corner, or the L's left end). Why not on
 // it: a box launched with cores touching and its middle on a junction is parted from the ground
@@ -79,8 +82,12 @@ std::vector<std::array<b2Vec2, 3>> cell_triangles(const Cell& c) {
   const b2Vec2 br(c.bl.x + kTile, c.bl.y), tr(c.bl.x + kTile, c.bl.y + kTile),
       tl(c.bl.x, c.bl.y + kTile);
   if (!c.five) return {{tl, c.bl, tr}, {tr, c.bl, br}};
-  const b2Vec2 mid(c.bl.x, c.bl.y + 0.5f * kTile), centre = c.bl + b2Vec2(0.5f * kTile, 0.5f * kTile);
-  return {{tl, mid, centre}, {mid, c.bl, centre}, {c.bl, br, centre}, {br, tr, centre},
+  const b2Vec2 mid(c.bl.x, c.bl.y + 0.5f * kTile),
+      centre = c.bl + b2Vec2(0.5f * kTile, 0.5f * kTile);
+  return {{tl, mid, centre},
+          {mid, c.bl, centre},
+          {c.bl, br, centre},
+          {br, tr, centre},
           {tr, tl, centre}};
 }
 
@@ -144,14 +151,15 @@ std::shared_ptr<ChangingGround> add_ground(World& world, const Ground& g, float 
     }
     case Layout::Chunks:
       for (int c = 0; c < kColumns / kChunk; ++c) {
-        b2Body* body =
-            add_body(world, b2_staticBody, b2Vec2(kStart + c * kChunk * kTile, top));
+        b2Body* body = add_body(world, b2_staticBody, b2Vec2(kStart + c * kChunk * kTile, top));
         for (int row = 0; row < rows; ++row) {
-          for (int i = c * kChunk; i < (c + 1) * kChunk; ++i) add_cell(body, cell_at(g, top, i, row), m);
+          for (int i = c * kChunk; i < (c + 1) * kChunk; ++i)
+            add_cell(body, cell_at(g, top, i, row), m);
         }
       }
       return nullptr;
-    default: break;
+    default:
+      break;
   }
   auto changing = std::make_shared<ChangingGround>();
   for (int i = 0; i < kColumns; ++i) {
@@ -161,8 +169,8 @@ std::shared_ptr<ChangingGround> add_ground(World& world, const Ground& g, float 
       // Tiles turned by quarter turns: cos(π/2) is not 0 in floats, so their vertices meet their
       // neighbours' only within rounding.
       const float angle = g.layout == Layout::Tiles ? 1.5707963f * ((i + row) % 4) : 0.0f;
-      b2Body* body = add_body(world, b2_staticBody, g.layout == Layout::Changing ? c.bl : centre,
-                              angle);
+      b2Body* body =
+          add_body(world, b2_staticBody, g.layout == Layout::Changing ? c.bl : centre, angle);
       add_cell(body, c, m);
       changing->tiles.push_back(body);
       changing->home.push_back(body->GetPosition());
@@ -193,15 +201,17 @@ WorldBuild build_tile_map(World& world, workloads::Random& rng) {
     const std::string name = "lane-" + std::to_string(lane + 1);
     for (int i = 0; i < kMapSliders; ++i) {
       const float x = kLaunchOffset + kMapSpacing * static_cast<float>(i) + jitter(rng, kJitter);
-      build.sliders.push_back(launch_slider(world, i % 2 == 0 ? "box" : "L", name, x, top, kMapSpeed));
+      build.sliders.push_back(
+          launch_slider(world, i % 2 == 0 ? "box" : "L", name, x, top, kMapSpeed));
     }
   }
   const float debris_top = -kLaneGap * static_cast<float>(kMapLanes);
   add_ground(world, lanes, debris_top, slider_rubber);
   const float length = kColumns * kTile;
   for (int i = 0; i < kMapDebris; ++i) {
-    const b2Vec2 at(kStart + length * (static_cast<float>(i) + 0.5f) / kMapDebris + jitter(rng, 0.1),
-                    debris_top + rng.uniformf(0.5, 2.5));
+    const b2Vec2 at(
+        kStart + length * (static_cast<float>(i) + 0.5f) / kMapDebris + jitter(rng, 0.1),
+        debris_top + rng.uniformf(0.5, 2.5));
     add_random_triangle(world, rng, at, rng.uniform(0.1, 0.25));
   }
   return build;

@@ -199,7 +199,8 @@ Drawing WorldScene::drawing() const {
           s.points.push_back(world_point(xf, e->m_vertex2));
           break;
         }
-        default: continue;  // the scenes make no chains
+        default:
+          continue;  // the scenes make no chains
       }
       d.shapes.push_back(std::move(s));
     }

@@ -58,8 +58,8 @@ class WorldScene : public Scene {
   /// Installs `runner`'s backend with the skips `skips` in the plug-in (throws
   /// `std::runtime_error` if refused), or uninstalls the plug-in for Box2D's own contact, then
   /// builds.
-  WorldScene(std::string name, const Runner& runner, std::uint64_t seed,
-             const box2d::Config& skips, const WorldBuilder& build);
+  WorldScene(std::string name, const Runner& runner, std::uint64_t seed, const box2d::Config& skips,
+             const WorldBuilder& build);
   ~WorldScene() override;
 
   void step() override;
@@ -85,8 +85,8 @@ class WorldScene : public Scene {
   std::vector<float> slider_start_x_;
   std::unique_ptr<ContactProbe> probe_;
   std::unique_ptr<ManifoldCheck> manifold_check_;  // set on the world by `check_manifolds`
-  bool spawning_ = false;        // `spawn_far_away`
-  b2Body* spawned_ = nullptr;    // its body while it lives (not in `World::bodies`)
+  bool spawning_ = false;                          // `spawn_far_away`
+  b2Body* spawned_ = nullptr;  // its body while it lives (not in `World::bodies`)
 
   int steps_ = 0;
   std::vector<double> step_ms_;

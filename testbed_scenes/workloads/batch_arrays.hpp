@@ -34,9 +34,9 @@ class BatchArrays {
   /// The input, row k being pair k.
   PairBatch<T> pairs() const {
     const auto& c = coords_;
-    return {c[0].data(), c[1].data(), c[2].data(), c[3].data(), c[4].data(),  c[5].data(),
-            c[6].data(), c[7].data(), c[8].data(), c[9].data(), c[10].data(), c[11].data(),
-            status.size()};
+    return {c[0].data(),  c[1].data(),  c[2].data(),  c[3].data(), c[4].data(),
+            c[5].data(),  c[6].data(),  c[7].data(),  c[8].data(), c[9].data(),
+            c[10].data(), c[11].data(), status.size()};
   }
 
   /// Where `penetrate_batch` writes: the arrays below.

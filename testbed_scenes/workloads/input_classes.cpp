@@ -81,9 +81,8 @@ RawPair general_where(Random& g, Want want) {
 // a branch predictor could learn), the others apart with overlapping boxes.
 RawPair mixed(Random& g, int index) {
   const bool want_penetrating = (static_cast<std::uint32_t>(index) * 2654435761u >> 16) % 3 == 0;
-  return general_where(g, [&](const RawPair& p) {
-    return penetrating(p) == want_penetrating && boxes_overlap(p);
-  });
+  return general_where(
+      g, [&](const RawPair& p) { return penetrating(p) == want_penetrating && boxes_overlap(p); });
 }
 
 RawPair apart(Random& g) {
@@ -191,8 +190,12 @@ RawPair contained(Random& g) {
   const double k = g.uniform(0.05, 0.95);
   V about;
   switch (g.below(3)) {
-    case 0: about = centroid(outer); break;
-    case 1: about = outer[g.below(3)]; break;
+    case 0:
+      about = centroid(outer);
+      break;
+    case 1:
+      about = outer[g.below(3)];
+      break;
     default: {
       const int i = g.below(3);
       about = outer[i] + g.uniform(0.2, 0.8) * (outer[(i + 1) % 3] - outer[i]);
@@ -314,22 +317,36 @@ RawPair nearly_collinear(Random& g, Precision precision) {
 // The `index`-th pair of class `c` for `precision`, before rounding.
 RawPair make_one(InputClass c, Random& g, Precision precision, int index) {
   switch (c) {
-    case InputClass::General: return general(g);
-    case InputClass::Overlapping: return general_where(g, penetrating);
-    case InputClass::Mixed: return mixed(g, index);
+    case InputClass::General:
+      return general(g);
+    case InputClass::Overlapping:
+      return general_where(g, penetrating);
+    case InputClass::Mixed:
+      return mixed(g, index);
     case InputClass::Separated:
       return general_where(g, [](const RawPair& p) { return !penetrating(p) && boxes_overlap(p); });
-    case InputClass::Apart: return apart(g);
-    case InputClass::AxisAligned: return axis_aligned(g);
-    case InputClass::Sliver: return sliver_pair(g);
-    case InputClass::NearParallel: return near_parallel(g);
-    case InputClass::Far: return far(g, precision);
-    case InputClass::Scale: return scaled(g);
-    case InputClass::Contained: return contained(g);
-    case InputClass::Identical: return identical(g);
-    case InputClass::Touching: return touching(g);
-    case InputClass::TouchingUlp: return touching_ulp(g, precision);
-    case InputClass::NearlyCollinear: return nearly_collinear(g, precision);
+    case InputClass::Apart:
+      return apart(g);
+    case InputClass::AxisAligned:
+      return axis_aligned(g);
+    case InputClass::Sliver:
+      return sliver_pair(g);
+    case InputClass::NearParallel:
+      return near_parallel(g);
+    case InputClass::Far:
+      return far(g, precision);
+    case InputClass::Scale:
+      return scaled(g);
+    case InputClass::Contained:
+      return contained(g);
+    case InputClass::Identical:
+      return identical(g);
+    case InputClass::Touching:
+      return touching(g);
+    case InputClass::TouchingUlp:
+      return touching_ulp(g, precision);
+    case InputClass::NearlyCollinear:
+      return nearly_collinear(g, precision);
   }
   return general(g);
 }
@@ -353,21 +370,36 @@ std::vector<RawPair> draw(InputClass c, int count, std::uint64_t seed, Precision
 
 const char* name(InputClass c) {
   switch (c) {
-    case InputClass::General: return "general";
-    case InputClass::Overlapping: return "overlapping";
-    case InputClass::Mixed: return "mixed";
-    case InputClass::Separated: return "separated";
-    case InputClass::Apart: return "apart";
-    case InputClass::AxisAligned: return "axis-aligned";
-    case InputClass::Sliver: return "sliver";
-    case InputClass::NearParallel: return "near-parallel";
-    case InputClass::Far: return "far";
-    case InputClass::Scale: return "scale";
-    case InputClass::Contained: return "contained";
-    case InputClass::Identical: return "identical";
-    case InputClass::Touching: return "touching";
-    case InputClass::TouchingUlp: return "touching-ulp";
-    case InputClass::NearlyCollinear: return "nearly-collinear";
+    case InputClass::General:
+      return "general";
+    case InputClass::Overlapping:
+      return "overlapping";
+    case InputClass::Mixed:
+      return "mixed";
+    case InputClass::Separated:
+      return "separated";
+    case InputClass::Apart:
+      return "apart";
+    case InputClass::AxisAligned:
+      return "axis-aligned";
+    case InputClass::Sliver:
+      return "sliver";
+    case InputClass::NearParallel:
+      return "near-parallel";
+    case InputClass::Far:
+      return "far";
+    case InputClass::Scale:
+      return "scale";
+    case InputClass::Contained:
+      return "contained";
+    case InputClass::Identical:
+      return "identical";
+    case InputClass::Touching:
+      return "touching";
+    case InputClass::TouchingUlp:
+      return "touching-ulp";
+    case InputClass::NearlyCollinear:
+      return "nearly-collinear";
   }
   return "unknown";
 }

@@ -14,35 +14,34 @@
 namespace dyop::workloads {
 
 enum class InputClass {
-  General,          ///< random triangles of size ~1, overlapping about a third of the time
-  Overlapping,      ///< general pairs that penetrate
-  Mixed,            ///< general pairs, a third penetrating, the rest apart with overlapping boxes
-  Separated,        ///< general pairs apart whose boxes overlap (what a broad phase lets through)
-  Apart,            ///< clearly apart: B 2.5 to 10 units from A
-  AxisAligned,      ///< vertical and horizontal edges, half the time on one line with the other's
-  Sliver,           ///< one or both triangles with aspect ratio 1e-1 down to 1e-7
-  NearParallel,     ///< an edge of B at 1e-14 to 1e-3 rad from an edge of A, just in or out
-  Far,              ///< general pairs 1 to `max_offset` units from the origin
-  Scale,            ///< general pairs scaled by 1e-8 to 1e8; a quarter with B up to 1e6 smaller
-  Contained,        ///< B in A or A in B: about the centroid, at a shared vertex, on an edge
-  Identical,        ///< A and B the same triangle, any winding
-  Touching,         ///< exactly touching in double: vertex or edge of B on an axis-aligned edge of A
-  TouchingUlp,      ///< B's vertex (a quarter: B's edge) within 2 ulps of A's edge, outside or in
+  General,       ///< random triangles of size ~1, overlapping about a third of the time
+  Overlapping,   ///< general pairs that penetrate
+  Mixed,         ///< general pairs, a third penetrating, the rest apart with overlapping boxes
+  Separated,     ///< general pairs apart whose boxes overlap (what a broad phase lets through)
+  Apart,         ///< clearly apart: B 2.5 to 10 units from A
+  AxisAligned,   ///< vertical and horizontal edges, half the time on one line with the other's
+  Sliver,        ///< one or both triangles with aspect ratio 1e-1 down to 1e-7
+  NearParallel,  ///< an edge of B at 1e-14 to 1e-3 rad from an edge of A, just in or out
+  Far,           ///< general pairs 1 to `max_offset` units from the origin
+  Scale,         ///< general pairs scaled by 1e-8 to 1e8; a quarter with B up to 1e6 smaller
+  Contained,     ///< B in A or A in B: about the centroid, at a shared vertex, on an edge
+  Identical,     ///< A and B the same triangle, any winding
+  Touching,      ///< exactly touching in double: vertex or edge of B on an axis-aligned edge of A
+  TouchingUlp,   ///< B's vertex (a quarter: B's edge) within 2 ulps of A's edge, outside or in
   NearlyCollinear,  ///< A flat to 0.1 to 1000 times the validation tolerance: some are rejected
 };
 
 /// What the tests check on, each pair through `make_valid_pairs`.
 inline constexpr InputClass test_classes[] = {
-    InputClass::General,   InputClass::AxisAligned, InputClass::Sliver,
-    InputClass::NearParallel, InputClass::Far,   InputClass::Scale,
-    InputClass::Contained, InputClass::Identical,   InputClass::Touching,
-    InputClass::Apart};
+    InputClass::General,  InputClass::AxisAligned, InputClass::Sliver,    InputClass::NearParallel,
+    InputClass::Far,      InputClass::Scale,       InputClass::Contained, InputClass::Identical,
+    InputClass::Touching, InputClass::Apart};
 
 /// What `dyop bench` and the Google Benchmark suite time: what a narrow phase meets after a broad
 /// phase.
-inline constexpr InputClass bench_classes[] = {
-    InputClass::Overlapping, InputClass::Mixed,        InputClass::Separated,
-    InputClass::Sliver,      InputClass::NearParallel, InputClass::Far};
+inline constexpr InputClass bench_classes[] = {InputClass::Overlapping,  InputClass::Mixed,
+                                               InputClass::Separated,    InputClass::Sliver,
+                                               InputClass::NearParallel, InputClass::Far};
 
 /// What `dyop stress` measures: where floating-point trouble lives.
 inline constexpr InputClass stress_classes[] = {

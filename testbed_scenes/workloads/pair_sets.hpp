@@ -17,10 +17,11 @@ namespace dyop::workloads {
 /// reference.
 template <class T>
 struct PairSet {
-  std::vector<RawPair> raw;        ///< the kept pairs as T sees them (rounded to T)
-  std::vector<Triangle<T>> a;      ///< A of each pair
-  std::vector<Triangle<T>> b;      ///< B of each pair
-  std::vector<Triangle<T>> b_next; ///< B after a small rigid motion: the next frame, for warm starts
+  std::vector<RawPair> raw;    ///< the kept pairs as T sees them (rounded to T)
+  std::vector<Triangle<T>> a;  ///< A of each pair
+  std::vector<Triangle<T>> b;  ///< B of each pair
+  std::vector<Triangle<T>>
+      b_next;  ///< B after a small rigid motion: the next frame, for warm starts
   std::size_t size() const { return a.size(); }
 };
 

@@ -47,7 +47,9 @@ class Random {
   bool coin() { return (next() >> 63) != 0; }
 
   /// 10^e for e uniform in [lo_exp, hi_exp): spread evenly over orders of magnitude.
-  double log_uniform(double lo_exp, double hi_exp) { return std::pow(10.0, uniform(lo_exp, hi_exp)); }
+  double log_uniform(double lo_exp, double hi_exp) {
+    return std::pow(10.0, uniform(lo_exp, hi_exp));
+  }
 
   /// A direction uniform on the circle: a point uniform in the unit disc (by rejection), scaled to
   /// length 1.

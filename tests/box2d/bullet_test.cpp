@@ -42,18 +42,18 @@ using Bullet = PerContact;
 
 TEST_P(Bullet, FastSmallTriangleDoesNotPassThroughThinStaticTriangleWall) {
   const bool fast = GetParam() == Backend::DyopFast;
-  for (const Shot shot : {Shot{0.0f, false}, Shot{0.0f, true}, Shot{1.5f, false},
-                          Shot{1.5f, true}}) {
+  for (const Shot shot :
+       {Shot{0.0f, false}, Shot{0.0f, true}, Shot{1.5f, false}, Shot{1.5f, true}}) {
     const float reach = fire(shot);
-    std::cout << contact() << (shot.bullet ? " bullet" : " non-bullet") << " at y = "
-              << shot.height << ": reached x = " << reach << " m\n";
+    std::cout << contact() << (shot.bullet ? " bullet" : " non-bullet") << " at y = " << shot.height
+              << ": reached x = " << reach << " m\n";
     RecordProperty(std::string(shot.bullet ? "bullet" : "non_bullet") + "_y" +
                        std::to_string(int(shot.height * 10)),
                    std::to_string(reach));
     if (!fast) {
       // The wall's face is x = 0; the skins stop the tip about 1.5 cm short of it.
-      EXPECT_LT(reach, 0.0f) << (shot.bullet ? "bullet" : "non-bullet") << " at y = "
-                             << shot.height;
+      EXPECT_LT(reach, 0.0f) << (shot.bullet ? "bullet" : "non-bullet")
+                             << " at y = " << shot.height;
     } else if (shot.height == 0.0f) {
       // DyopFast is approximate by design: at the time of impact (5 mm apart) its pivot picks a
       // slanted face of the wall, which is not a separating axis, so it reports no speculative

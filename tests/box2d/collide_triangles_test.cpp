@@ -99,8 +99,8 @@ TEST(CollideTriangles, AgreesWithSatOnRandomPairsUpToBox2DsOwnChoices) {
     }
   }
   std::cout << "box2d vs sat (float): " << separated << " separated pairs, max |Δdistance| "
-            << worst_distance << "; " << penetrating << " penetrating, max |Δdepth| "
-            << worst_depth << "\n";
+            << worst_distance << "; " << penetrating << " penetrating, max |Δdepth| " << worst_depth
+            << "\n";
   EXPECT_LE(worst_distance, kTolerance);
   // Box2D keeps A's face while B's is better by less than its k_tol, so its depth may exceed the
   // minimum by that much; otherwise both take the same face.

@@ -215,8 +215,8 @@ TEST(EdgeGroupMasks, TilesInBodiesOfTheirOwnHaveTheMasksOfOneBody) {
         b2Fixture* in_one = add_triangle(one, t[0], t[1], t[2]);
         b2Body* body = add_body(tiles_world, b2_staticBody, centre, angle);
         const b2Transform& xf = body->GetTransform();
-        pairs.emplace_back(in_one,
-                           add_triangle(body, b2MulT(xf, t[0]), b2MulT(xf, t[1]), b2MulT(xf, t[2])));
+        pairs.emplace_back(
+            in_one, add_triangle(body, b2MulT(xf, t[0]), b2MulT(xf, t[1]), b2MulT(xf, t[2])));
       }
     }
   }

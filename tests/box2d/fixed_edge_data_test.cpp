@@ -74,9 +74,9 @@ TEST(FixedEdgeData, EqualsTheMasksFoundForTilesAsBodiesAndForOneBody) {
   add_tiles(world, 6);
   b2Body* one = add_body(world, b2_staticBody, b2Vec2(0.0f, -5.0f));
   const TileRow row = tile_row(6);
-  const MeshResult r = add_triangles(*one, row.vertices.data(),
-                                     static_cast<int>(row.vertices.size()), row.indices.data(),
-                                     static_cast<int>(row.indices.size()));
+  const MeshResult r =
+      add_triangles(*one, row.vertices.data(), static_cast<int>(row.vertices.size()),
+                    row.indices.data(), static_cast<int>(row.indices.size()));
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.fixtures.size(), 12u);
   expect_fixed_equals_found(world.get());
@@ -124,7 +124,8 @@ TEST(FixedEdgeData, LeavesTheWorldBitIdenticalToMasksFoundByContacts) {
 TEST(FixedEdgeData, ARefreshWhereATileWentMakesItsNeighboursEdgeAnOutlineEdge) {
   World world;
   const std::vector<b2Body*> tiles = add_tiles(world, 3);
-  b2Fixture* left_of_gap = tiles[0]->GetFixtureList();  // the tile's second triangle: its right side
+  b2Fixture* left_of_gap =
+      tiles[0]->GetFixtureList();  // the tile's second triangle: its right side
   const InternalEdges before = *fixed_internal_edges(*left_of_gap);
   b2AABB where;
   where.lowerBound = tiles[1]->GetPosition() + b2Vec2(0.0f, -kTile);
@@ -225,8 +226,8 @@ TEST(MeshBuilder, ARefusedMeshNamesTheTriangleAndCreatesNothing) {
       {{}, MeshError::IndexCount, -1},
   };
   for (const Bad& c : cases) {
-    const MeshResult r = add_triangles(*body, vertices, 6, c.indices.data(),
-                                       static_cast<int>(c.indices.size()));
+    const MeshResult r =
+        add_triangles(*body, vertices, 6, c.indices.data(), static_cast<int>(c.indices.size()));
     EXPECT_EQ(r.error, c.error) << r.message;
     EXPECT_EQ(r.triangle, c.triangle) << r.message;
     EXPECT_FALSE(r.ok());

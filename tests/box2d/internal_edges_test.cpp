@@ -125,8 +125,8 @@ const Case kCases[] = {
 std::string describe(const Case& c) {
   char text[96];
   std::snprintf(text, sizeof text, "%s on %s %.2f m cells at %.0f m/s",
-                c.slider == Slider::Box ? "box" : "L", c.pattern == Pattern::Diagonal ? "diagonal" : "fan",
-                c.cell, c.speed);
+                c.slider == Slider::Box ? "box" : "L",
+                c.pattern == Pattern::Diagonal ? "diagonal" : "fan", c.cell, c.speed);
   return text;
 }
 
@@ -145,10 +145,11 @@ TEST_P(ExactBackend, FrictionlessBoxGlidesOverTriangulatedGrounds) {
     EXPECT_EQ(stats().fallbacks, 0u);
     ASSERT_TRUE(uninstall().ok());
     // The comparison, for the record: the switch off shows the ghost collisions.
-    std::printf("%-5s %-36s on: vy %.4f w %.4f travel %5.1f %% | off: vy %.4f w %.4f "
-                "travel %5.1f %%\n",
-                name(GetParam()), describe(c).c_str(), g.max_vertical, g.max_angular,
-                100 * g.travel, ghost.max_vertical, ghost.max_angular, 100 * ghost.travel);
+    std::printf(
+        "%-5s %-36s on: vy %.4f w %.4f travel %5.1f %% | off: vy %.4f w %.4f "
+        "travel %5.1f %%\n",
+        name(GetParam()), describe(c).c_str(), g.max_vertical, g.max_angular, 100 * g.travel,
+        ghost.max_vertical, ghost.max_angular, 100 * ghost.travel);
     EXPECT_LE(g.max_vertical, 0.05f);
     EXPECT_GE(g.travel, 0.98f);
     EXPECT_GT(g.lowest, -kSinkAllowed);
@@ -185,11 +186,14 @@ TEST_P(TenThousandTriangles, BoxGlidesOverTheGround) {
     max_vertical = std::max(max_vertical, std::abs(box->GetLinearVelocity().y));
   }
   const auto t3 = std::chrono::steady_clock::now();
-  const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-  std::printf("ground of %d triangles, edge data %s: fixing %.3f ms, first step %.3f ms, "
-              "600 steps %.3f ms\n",
-              world->GetProxyCount() - 2, fixed ? "fixed" : "found by contacts", ms(t0, t1),
-              ms(t1, t2), ms(t2, t3));
+  const auto ms = [](auto a, auto b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  std::printf(
+      "ground of %d triangles, edge data %s: fixing %.3f ms, first step %.3f ms, "
+      "600 steps %.3f ms\n",
+      world->GetProxyCount() - 2, fixed ? "fixed" : "found by contacts", ms(t0, t1), ms(t1, t2),
+      ms(t2, t3));
   EXPECT_GT(stats().internal_edge_pairs, 0u);
   EXPECT_LE(max_vertical, 0.05f);
   EXPECT_GE(box->GetPosition().x, 0.98f * kSpeed * 600 / kStepsPerSecond);

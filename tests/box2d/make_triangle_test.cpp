@@ -59,7 +59,8 @@ void box2d_set(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2) {
 TEST(MakeTriangle, RejectsVerticesBox2DWouldWeld) {
   // 2 mm apart: under 0.5·b2_linearSlop, yet a fine triangle for the library (not degenerate).
   const b2Vec2 p0(0.0f, 0.0f), p1(0.002f, 0.0f), p2(0.0f, 1.0f);
-  ASSERT_TRUE(Triangle<float>::make(Vec2<float>(0, 0), Vec2<float>(0.002f, 0), Vec2<float>(0, 1)).ok());
+  ASSERT_TRUE(
+      Triangle<float>::make(Vec2<float>(0, 0), Vec2<float>(0.002f, 0), Vec2<float>(0, 1)).ok());
   const TriangleShape t = make_triangle(p0, p1, p2);
   EXPECT_EQ(t.error, ShapeError::VerticesTooClose);
   EXPECT_STREQ(t.message, describe(ShapeError::VerticesTooClose));

@@ -98,7 +98,8 @@ bool near_tie(const Placed& a, const Placed& b, double margin) {
   std::array<double, 3> dots;
   for (int k = 0; k < 3; ++k) dots[k] = ref.n[e].dot(inc.n[k]);
   int k1 = 0;
-  for (int k = 1; k < 3; ++k) if (dots[k] < dots[k1]) k1 = k;
+  for (int k = 1; k < 3; ++k)
+    if (dots[k] < dots[k1]) k1 = k;
   for (int k = 0; k < 3; ++k) {
     if (k != k1 && dots[k] - dots[k1] < kTieTolerance) return true;
   }
@@ -149,11 +150,11 @@ b2PolygonShape random_triangle(workloads::Random& rng) {
 }
 
 struct Figures {
-  int compared = 0;      // non-tie pairs
-  int non_empty = 0;     // of which with points
+  int compared = 0;   // non-tie pairs
+  int non_empty = 0;  // of which with points
   int near_ties = 0;
   int ties_that_differ = 0;  // near-ties where the two choices did differ
-  int face_b = 0;        // compared pairs whose reference face is B's
+  int face_b = 0;            // compared pairs whose reference face is B's
   double max_separation_difference = 0;
   double max_normal_difference = 0;
 };
@@ -246,8 +247,8 @@ TEST_P(ManifoldAgreement, MatchesB2CollidePolygonsOnRandomRestingAndPenetratingP
   }
   std::cout << name(GetParam()) << " vs b2CollidePolygons: " << kPairs << " pairs, "
             << fig.near_ties << " near-ties excluded (" << fig.ties_that_differ
-            << " of them differ), " << fig.compared << " compared ("
-            << fig.non_empty << " with points, " << fig.face_b << " on B's face); max |Δseparation| "
+            << " of them differ), " << fig.compared << " compared (" << fig.non_empty
+            << " with points, " << fig.face_b << " on B's face); max |Δseparation| "
             << fig.max_separation_difference << " m, max |Δnormal| " << fig.max_normal_difference
             << "\n";
   RecordProperty("compared", fig.compared);

@@ -206,9 +206,9 @@ TEST(ManyWorlds, WorldsSteppedByWhicheverWorkerIsFreeEndAtThePinnedHashes) {
 
 // --- Reset loop -----------------------------------------------------------------------------
 
-constexpr int kEpisodeCells = 24;      // ground cells of 1 m, two triangles each
-constexpr int kEpisodeBoxes = 40;      // split boxes dropped on the ground
-constexpr int kEpisodeSteps = 240;     // 4 s: they land and settle
+constexpr int kEpisodeCells = 24;   // ground cells of 1 m, two triangles each
+constexpr int kEpisodeBoxes = 40;   // split boxes dropped on the ground
+constexpr int kEpisodeSteps = 240;  // 4 s: they land and settle
 constexpr int kEpisodes = 12;
 
 // The ground's top height at cell corner i in episode `terrain`: flat stretches and slopes that

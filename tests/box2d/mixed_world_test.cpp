@@ -112,7 +112,8 @@ std::vector<b2Body*> build_mixed_world(World& world) {
         if (i % 8 == 3) {
           b2PolygonShape pentagon;
           b2Vec2 v[5];
-          for (int k = 0; k < 5; ++k) v[k].Set(0.5f * std::cos(1.2566f * k), 0.5f * std::sin(1.2566f * k));
+          for (int k = 0; k < 5; ++k)
+            v[k].Set(0.5f * std::cos(1.2566f * k), 0.5f * std::sin(1.2566f * k));
           pentagon.Set(v, 5);
           body->CreateFixture(&pentagon, 1.0f);
         } else {

@@ -33,7 +33,8 @@ inline float skin_penetration(b2Body* body) {
     if (!c->IsTouching()) continue;
     b2WorldManifold wm;
     c->GetWorldManifold(&wm);
-    for (int i = 0; i < c->GetManifold()->pointCount; ++i) deepest = std::max(deepest, -wm.separations[i]);
+    for (int i = 0; i < c->GetManifold()->pointCount; ++i)
+      deepest = std::max(deepest, -wm.separations[i]);
   }
   return deepest;
 }
@@ -48,9 +49,9 @@ inline std::string contact_name(const Contact& c) {
   return "via_plugin_" + n;
 }
 
-inline const Contact kAllContacts[] = {std::nullopt,     Backend::Dyop, Backend::DyopFast,
-                                      Backend::LinCanny, Backend::Sat,  Backend::Epa,
-                                      Backend::Box2D};
+inline const Contact kAllContacts[] = {std::nullopt,      Backend::Dyop, Backend::DyopFast,
+                                       Backend::LinCanny, Backend::Sat,  Backend::Epa,
+                                       Backend::Box2D};
 
 // A test run with one contact: installs the backend before the world exists, checks afterwards
 // that every triangle pair was answered by it (no fallback to Box2D), and uninstalls.

@@ -79,9 +79,10 @@ Config rule(bool on) {
 TEST(SharedEdgesAcrossBodies, SliderGlidesOverAGroundOfOneStaticBodyPerTriangle) {
   const SlideRun on = slide(rule(true), b2_staticBody);
   const SlideRun off = slide(rule(false), b2_staticBody);
-  std::printf("one static body per triangle: rule on vy %.4f travel %.1f %% | off vy %.4f travel "
-              "%.1f %%\n",
-              on.max_vertical, 100 * on.travel, off.max_vertical, 100 * off.travel);
+  std::printf(
+      "one static body per triangle: rule on vy %.4f travel %.1f %% | off vy %.4f travel "
+      "%.1f %%\n",
+      on.max_vertical, 100 * on.travel, off.max_vertical, 100 * off.travel);
   EXPECT_GT(on.rule_pairs, 0u);
   EXPECT_LE(on.max_vertical, kGlideVerticalSpeed);
   EXPECT_GE(on.travel, kGlideTravel);

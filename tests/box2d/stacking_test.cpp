@@ -55,7 +55,8 @@ TEST_P(Stacking, TenSplitBoxesStackedStayStandingFor10s) {
   std::vector<b2Body*> boxes;
   const float pitch = 2 * kHalf + b2_polygonRadius;
   for (int i = 0; i < 10; ++i) {
-    boxes.push_back(add_split_box(world, b2Vec2(0.0f, kHalf + b2_polygonRadius + i * pitch), kHalf));
+    boxes.push_back(
+        add_split_box(world, b2Vec2(0.0f, kHalf + b2_polygonRadius + i * pitch), kHalf));
   }
   const Motion m = run(world, boxes.back(), boxes, 10);
   report("stack", contact(), m);

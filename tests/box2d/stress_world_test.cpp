@@ -30,7 +30,8 @@ double kinetic_energy(World& world) {
 double potential_energy(World& world, float floor) {
   double e = 0;
   for (b2Body* b = world->GetBodyList(); b != nullptr; b = b->GetNext()) {
-    if (b->GetType() == b2_dynamicBody) e += b->GetMass() * kGravity * (b->GetWorldCenter().y - floor);
+    if (b->GetType() == b2_dynamicBody)
+      e += b->GetMass() * kGravity * (b->GetWorldCenter().y - floor);
   }
   return e;
 }
@@ -127,10 +128,10 @@ TEST_P(StressWorld, SliversTinyAndLargeTrianglesSettleWithoutNaNOrExplosion) {
     EXPECT_LE(r.energy_max, (1 + kEnergyGrowth) * r.energy_start) << where;
     EXPECT_LE(r.kinetic_max, r.energy_start) << where;
     EXPECT_LE(r.kinetic_end, kSettled * r.energy_start) << where << ": still moving";
-    ::testing::Test::RecordProperty(contact() + (offset.x == 0 ? ".origin" : ".far"),
-                                    "energy max / start " + std::to_string(r.energy_max / r.energy_start) +
-                                        ", kinetic at the end / start " +
-                                        std::to_string(r.kinetic_end / r.energy_start));
+    ::testing::Test::RecordProperty(
+        contact() + (offset.x == 0 ? ".origin" : ".far"),
+        "energy max / start " + std::to_string(r.energy_max / r.energy_start) +
+            ", kinetic at the end / start " + std::to_string(r.kinetic_end / r.energy_start));
   }
 }
 
@@ -142,8 +143,8 @@ INSTANTIATE_TEST_SUITE_P(EveryContact, StressWorld, ::testing::ValuesIn(kAllCont
 // takes them without asserting (fixture creation computes the centroid and the mass, where Box2D
 // 2.4 asserts) and steps them on a ground without a NaN.
 TEST(StressShapes, MakeTriangleRefusesWhatBox2DWouldAssertOnAndBox2DTakesTheRest) {
-  using workloads::Precision;
   using workloads::InputClass;
+  using workloads::Precision;
   int accepted = 0;
   int refused = 0;
   workloads::Random rng(3);

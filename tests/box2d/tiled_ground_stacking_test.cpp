@@ -1,7 +1,7 @@
 // Stacks and pyramids of two-triangle boxes stand on tiled grounds as on one piece, with the
 // internal-edge rule (the exact backends): grounds of 0.5 m tiles in one static body, in one static
-// body per tile and in 8 × 8 chunks per body. Edges shared across static bodies are internal, so the
-// boxes' corners over tile junctions are pushed up, as over the junctions of one body.
+// body per tile and in 8 × 8 chunks per body. Edges shared across static bodies are internal, so
+// the boxes' corners over tile junctions are pushed up, as over the junctions of one body.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,7 +14,7 @@ namespace dyop::box2d::testing {
 namespace {
 
 constexpr float kTile = 0.5f;
-constexpr int kColumns = 32;  // 16 m of ground from x = -8
+constexpr int kColumns = 32;   // 16 m of ground from x = -8
 constexpr float kHalf = 0.5f;  // boxes of 1 m, as the `pyramid` scene's
 // m: a structure stands when its top body moves no more than this over the run (one that falls
 // moves by metres; a stack of eight 1 m boxes sways by 3 cm on one piece), and no more than this
@@ -93,8 +93,7 @@ TEST_P(ExactBackend, StacksAndPyramidsStandOnTiledGroundsAsOnOnePiece) {
   ASSERT_TRUE(uninstall().ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(TiledGrounds, ExactBackend,
-                         ::testing::Values(Backend::Dyop, Backend::Sat),
+INSTANTIATE_TEST_SUITE_P(TiledGrounds, ExactBackend, ::testing::Values(Backend::Dyop, Backend::Sat),
                          [](const ::testing::TestParamInfo<Backend>& i) {
                            return std::string(name(i.param));
                          });

@@ -27,9 +27,9 @@ std::vector<Seed> corpus() {
   for (const auto& entry : std::filesystem::directory_iterator(DYOP_WORLD_CORPUS)) {
     std::ifstream in(entry.path(), std::ios::binary);
     const std::vector<char> bytes{std::istreambuf_iterator<char>(in), {}};
-    seeds.push_back({entry.path().filename().string(),
-                     decode_world_ops(reinterpret_cast<const std::uint8_t*>(bytes.data()),
-                                      bytes.size())});
+    seeds.push_back(
+        {entry.path().filename().string(),
+         decode_world_ops(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size())});
     if (std::getenv("DYOP_PRINT_SEQUENCES")) {
       std::printf("%s:\n", seeds.back().name.c_str());
       play_world_ops(seeds.back().ops, Installs::AsWritten, stdout);

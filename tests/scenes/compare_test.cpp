@@ -93,8 +93,8 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
     EXPECT_NE(report.find("](" + page + ")"), std::string::npos) << page;
   }
   // Every section's files are listed in the report.
-  for (const char* file : {"inworld.csv", "slide.csv", "tiles.csv", "skips.csv", "paper_methods.csv",
-                           "threads.csv"}) {
+  for (const char* file :
+       {"inworld.csv", "slide.csv", "tiles.csv", "skips.csv", "paper_methods.csv", "threads.csv"}) {
     EXPECT_NE(report.find(std::string("`") + file + "`"), std::string::npos) << file;
   }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {

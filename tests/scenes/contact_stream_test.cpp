@@ -185,23 +185,26 @@ std::string invalid_argument_message(F&& f) {
 }
 
 TEST(ContactStream, BadInputIsRefusedWithAMessage) {
-  EXPECT_NE(invalid_argument_message([] { record_stream("no-such-scene", kSteps, kSeed); })
-                .find("unknown scene 'no-such-scene'"),
+  EXPECT_NE(invalid_argument_message([] {
+              record_stream("no-such-scene", kSteps, kSeed);
+            }).find("unknown scene 'no-such-scene'"),
             std::string::npos);
-  EXPECT_NE(invalid_argument_message([] { record_stream("paper", kSteps, kSeed); })
-                .find("no Box2D world"),
+  EXPECT_NE(invalid_argument_message([] {
+              record_stream("paper", kSteps, kSeed);
+            }).find("no Box2D world"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([] { record_stream("rain", 1, kSeed); }).find("2 steps"),
             std::string::npos);
-  EXPECT_NE(invalid_argument_message([] { world_evaluations("no-such-scene", kSteps, kSeed); })
-                .find("unknown scene"),
+  EXPECT_NE(invalid_argument_message([] {
+              world_evaluations("no-such-scene", kSteps, kSeed);
+            }).find("unknown scene"),
             std::string::npos);
 
   ContactStream empty;
   empty.scene = "rain";
-  EXPECT_NE(invalid_argument_message([&] { compare_with_box2d(empty, Backend::Dyop); })
-                .find("empty"),
-            std::string::npos);
+  EXPECT_NE(
+      invalid_argument_message([&] { compare_with_box2d(empty, Backend::Dyop); }).find("empty"),
+      std::string::npos);
   EXPECT_NE(invalid_argument_message([&] { replay_manifolds(empty, Backend::Dyop); }).find("empty"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([&] { measure_stream(empty, StreamOptions{}); }).find("empty"),

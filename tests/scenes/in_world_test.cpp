@@ -60,9 +60,8 @@ TEST(InWorld, AlternatesOwnAndBackendAndGivesFinitePositiveRatios) {
   for (double ratio : {r.narrowphase_ratio(), r.step_ratio()}) {
     EXPECT_TRUE(std::isfinite(ratio) && ratio > 0) << ratio;
   }
-  EXPECT_THROW(measure_in_world("stack", box2d::Backend::Sat, 0, [](const Runner&) {
-                 return SceneMetrics{};
-               }),
+  EXPECT_THROW(measure_in_world("stack", box2d::Backend::Sat, 0,
+                                [](const Runner&) { return SceneMetrics{}; }),
                std::invalid_argument);
 }
 
@@ -88,8 +87,7 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
   report::in_world_records(rows).write_csv(csv);
   EXPECT_NE(table.str().find("| mixed | dyop |"), std::string::npos) << table.str();
   const std::string text = csv.str();
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
-            static_cast<long>(rows.size()) + 1);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), static_cast<long>(rows.size()) + 1);
   EXPECT_EQ(text.rfind("scene,backend,steps,repetitions,narrowphase_ms_own", 0), 0u);
 }
 

@@ -88,8 +88,8 @@ TEST(RainScaling, RunsEveryBackendAtEverySizeWithRatiosToBox2dAndToBox2DsOwnCont
     EXPECT_EQ(p.rfind("cannot", 0), std::string::npos) << p;  // gnuplot may be missing, no more
   }
   std::ifstream csv(dir + "/scaling.csv");
-  const auto lines = std::count(std::istreambuf_iterator<char>(csv),
-                                std::istreambuf_iterator<char>(), '\n');
+  const auto lines =
+      std::count(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>(), '\n');
   EXPECT_EQ(lines, static_cast<long>(records.size()) + 1);
   EXPECT_NE(section.find("| lin-canny | 60 |"), std::string::npos);
 }

@@ -181,8 +181,8 @@ TEST(SceneCli, SvgToStandardOutput) {
 TEST(ViewCli, WritesOnePageAndTheCountsItShows) {
   const auto dir = temp_dir("view");
   const std::string page = (dir / "deep" / "slide.html").string();
-  const Outcome r = run("view slide --steps 5 --out " + page + " --json " +
-                        (dir / "slide.json").string());
+  const Outcome r =
+      run("view slide --steps 5 --out " + page + " --json " + (dir / "slide.json").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("box2d-own"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("page: " + page), std::string::npos) << r.out;
@@ -199,8 +199,10 @@ TEST(ViewCli, WritesOnePageAndTheCountsItShows) {
 
 TEST(ViewCli, TakesAnyTwoRunnersAndTheRuleSwitch) {
   const auto dir = temp_dir("view_runners");
-  const Outcome r = run("view paper --steps 3 --runner sat --runner box2d-own --internal-edges "
-                        "off --out " + (dir / "p.html").string() + " --json -");
+  const Outcome r =
+      run("view paper --steps 3 --runner sat --runner box2d-own --internal-edges "
+          "off --out " +
+          (dir / "p.html").string() + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["runners"], nlohmann::json({"sat", "box2d-own"}));
@@ -210,9 +212,10 @@ TEST(ViewCli, TakesAnyTwoRunnersAndTheRuleSwitch) {
 
 TEST(ViewCli, SetsTheSameBackendAgainstItselfWithTwoSettings) {
   const auto dir = temp_dir("view_settings");
-  const Outcome r = run("view slide --steps 3 --runner dyop --runner dyop --internal-edges on "
-                        "--internal-edges off --skip all --skip none --recycle 0.002 --out " +
-                        (dir / "s.html").string() + " --json -");
+  const Outcome r =
+      run("view slide --steps 3 --runner dyop --runner dyop --internal-edges on "
+          "--internal-edges off --skip all --skip none --recycle 0.002 --out " +
+          (dir / "s.html").string() + " --json -");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["internal_edges"], nlohmann::json({true, false}));

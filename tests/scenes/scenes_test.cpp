@@ -60,9 +60,9 @@ std::vector<Case> every_case() {
 INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(every_case()), case_name);
 
 TEST(Catalogue, HasEveryScene) {
-  for (const char* name : {"paper", "pyramid", "pyramid-rows", "stack", "stack-concave", "rain",
-                           "tumbler", "slivers", "slivers-far", "mixed", "slide", "tiles",
-                           "tile-map"}) {
+  for (const char* name :
+       {"paper", "pyramid", "pyramid-rows", "stack", "stack-concave", "rain", "tumbler", "slivers",
+        "slivers-far", "mixed", "slide", "tiles", "tile-map"}) {
     EXPECT_NE(find_scene(name), nullptr) << name;
   }
   EXPECT_EQ(find_scene("nope"), nullptr);

@@ -81,7 +81,8 @@ TEST_P(EveryRunner, SlideFiguresArePresentAndFinite) {
   EXPECT_EQ(j["slide"]["sliders"].size(), 8u);
   EXPECT_TRUE(j["slide"]["min_travel"].is_number());
   const std::string row = report::csv_row(m);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','), static_cast<long>(report::csv_columns().size()) - 1)
+  EXPECT_EQ(std::count(row.begin(), row.end(), ','),
+            static_cast<long>(report::csv_columns().size()) - 1)
       << "the per-slider list has no CSV column";
 }
 

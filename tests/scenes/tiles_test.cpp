@@ -28,8 +28,8 @@ constexpr double kWheelRollingVerticalSpeed = 0.45;
 // one-body travel over seeds 0-5 with the rule on), as in `slide`.
 constexpr double kWheelTravelSpread = 0.2;
 constexpr std::uint64_t kSeed = 3;
-const char* const kGrounds[] = {"one-body",    "tiles",            "chunks-8x8",
-                                "t-junctions", "t-junction-tiles", "changing-tiles"};
+const char* const kGrounds[] = {"one-body",         "tiles",         "chunks-8x8", "t-junctions",
+                                "t-junction-tiles", "changing-tiles"};
 
 int full_steps() { return find_scene("tiles")->default_steps; }
 
@@ -102,8 +102,8 @@ constexpr double kCrowdLVerticalSpeed = 0.1;
 // The tile map's crowd: every box and L on every lane glides over its tiles as bodies, each
 // contact running the rule at every step (too fast to be kept), with debris falling beside them.
 TEST(TileMap, EverySliderOfTheCrowdGlides) {
-  const SceneMetrics m = run_scene("tile-map", box2d::Backend::Dyop,
-                                   find_scene("tile-map")->default_steps, kSeed);
+  const SceneMetrics m =
+      run_scene("tile-map", box2d::Backend::Dyop, find_scene("tile-map")->default_steps, kSeed);
   ASSERT_TRUE(m.slide.has_value());
   EXPECT_EQ(m.slide->sliders.size(), 48u);
   for (const SliderFigures& s : m.slide->sliders) {

@@ -81,8 +81,7 @@ TEST(LockstepRecording, OnlyThePluginsInternalEdgeRuleIsMarked) {
 }
 
 TEST(LockstepRecording, UnknownSceneOrNoStepIsRefused) {
-  EXPECT_THROW(record_lockstep("nope", {std::nullopt, Backend::Dyop}, 3, 0),
-               std::invalid_argument);
+  EXPECT_THROW(record_lockstep("nope", {std::nullopt, Backend::Dyop}, 3, 0), std::invalid_argument);
   EXPECT_THROW(record_lockstep("slide", {std::nullopt, Backend::Dyop}, 0, 0),
                std::invalid_argument);
 }

@@ -35,9 +35,12 @@ bool all_finite(const Result<T>& r) {
 // A feature type as failure messages name it.
 inline const char* type_name(Feature::Type t) {
   switch (t) {
-    case Feature::Type::Vertex: return "vertex";
-    case Feature::Type::Edge: return "edge";
-    case Feature::Type::None: break;
+    case Feature::Type::Vertex:
+      return "vertex";
+    case Feature::Type::Edge:
+      return "edge";
+    case Feature::Type::None:
+      break;
   }
   return "none";
 }
@@ -51,9 +54,9 @@ template <class T>
   const auto text = [](Feature f) {
     return std::string(type_name(f.type)) + " " + std::to_string(f.index);
   };
-  return ::testing::AssertionFailure() << "features A " << text(r.feature_a) << ", B "
-                                       << text(r.feature_b) << "; expected A " << text(a)
-                                       << ", B " << text(b);
+  return ::testing::AssertionFailure()
+         << "features A " << text(r.feature_a) << ", B " << text(r.feature_b) << "; expected A "
+         << text(a) << ", B " << text(b);
 }
 
 }  // namespace dyop::test_support

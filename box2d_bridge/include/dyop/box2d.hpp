@@ -64,8 +64,8 @@ inline constexpr int backend_count = 6;
 
 /// Every backend, in `Backend` order: dyop, dyop-fast, lin-canny, sat, epa, box2d.
 inline constexpr std::array<Backend, backend_count> all_backends = {
-    Backend::Dyop, Backend::DyopFast, Backend::LinCanny, Backend::Sat, Backend::Epa,
-    Backend::Box2D};
+    Backend::Dyop, Backend::DyopFast, Backend::LinCanny,
+    Backend::Sat,  Backend::Epa,      Backend::Box2D};
 
 namespace detail {
 
@@ -215,7 +215,7 @@ struct ContactMemory {
     /// Two triangles not validated yet: only skips have answered them so far (then `Triangles` or
     /// `InvalidTriangles` once the backend runs).
     UnvalidatedTriangles,
-    Polygons,          ///< a side with more than 3 vertices: `b2CollidePolygons` answers
+    Polygons,  ///< a side with more than 3 vertices: `b2CollidePolygons` answers
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
   PairState warm_start;

@@ -53,8 +53,7 @@ struct MeshResult {
 /// checked first (`make_triangle`: degenerate, repeated or non-finite vertices, slivers Box2D
 /// would assert on): one refused triangle, an index out of range or a locked world refuses the
 /// whole mesh, and nothing is created.
-MeshResult add_triangles(b2Body& body, const b2Vec2* vertices, int vertex_count,
-                         const int* indices, int index_count,
-                         const b2FixtureDef& def = b2FixtureDef());
+MeshResult add_triangles(b2Body& body, const b2Vec2* vertices, int vertex_count, const int* indices,
+                         int index_count, const b2FixtureDef& def = b2FixtureDef());
 
 }  // namespace dyop::box2d

@@ -23,11 +23,11 @@ namespace dyop {
 /// Numbers of one direction of the paper's computation, as its Figure 6 prints them.
 template <class T>
 struct PaperLines {
-  T m = 0;             ///< M_PQ, slope of the pivot edge (eq. 3)
-  T c = 0;             ///< C_PQ, intercept of the pivot edge (eq. 4)
-  T c_vertex = 0;      ///< C_i-PQ, intercept of the parallel through the pivot vertex (eq. 5)
-  T depth_eq8 = 0;     ///< the paper's penetration depth: eq. 7 when M = 0, eq. 8 otherwise
-  T true_distance = 0; ///< the correct line distance |C_i − C_PQ| / sqrt(1 + M²)
+  T m = 0;              ///< M_PQ, slope of the pivot edge (eq. 3)
+  T c = 0;              ///< C_PQ, intercept of the pivot edge (eq. 4)
+  T c_vertex = 0;       ///< C_i-PQ, intercept of the parallel through the pivot vertex (eq. 5)
+  T depth_eq8 = 0;      ///< the paper's penetration depth: eq. 7 when M = 0, eq. 8 otherwise
+  T true_distance = 0;  ///< the correct line distance |C_i − C_PQ| / sqrt(1 + M²)
 };
 
 /// Eqs. 3–8 for vertex `x` against the line through `p` and `q`. `ok()` is false (and the numbers
@@ -35,8 +35,8 @@ struct PaperLines {
 /// slope or eq. 8's value is not finite.
 template <class T>
 struct PaperLinesOrError {
-  InvalidReason reason = InvalidReason::None;  ///< None when the numbers are valid
-  PaperLines<T> lines;                         ///< valid only when `reason == None`
+  InvalidReason reason = InvalidReason::None;                ///< None when the numbers are valid
+  PaperLines<T> lines;                                       ///< valid only when `reason == None`
   bool ok() const { return reason == InvalidReason::None; }  ///< true when `reason == None`
 };
 

@@ -52,11 +52,11 @@ namespace dyop {
 
 /// The last feature pair of one triangle pair, for a warm start. Default-constructed: cold.
 struct LinCannyCache {
-  bool valid = false;          ///< false: start cold
+  bool valid = false;                            ///< false: start cold
   Feature::Type type_a = Feature::Type::Vertex;  ///< last feature of A (CCW index below)
   Feature::Type type_b = Feature::Type::Vertex;  ///< last feature of B (CCW index below)
-  std::uint8_t index_a = 0;    ///< CCW index in A (not the caller's: a cache is opaque state)
-  std::uint8_t index_b = 0;    ///< CCW index in B
+  std::uint8_t index_a = 0;  ///< CCW index in A (not the caller's: a cache is opaque state)
+  std::uint8_t index_b = 0;  ///< CCW index in B
   /// A start for the next depth walk: 0..2 A's edges, 3..5 B's edges (CCW). The last depth walk's
   /// axis; after a query that ended apart, the final pair's face best aligned with the normal.
   std::uint8_t depth_axis = 0;

@@ -76,15 +76,15 @@ constexpr std::uint8_t level_bit(Level level) {
 }
 
 /// Every query level.
-inline constexpr std::uint8_t all_level_bits =
-    level_bit(Level::Overlap) | level_bit(Level::Depth) | level_bit(Level::Contact) |
-    level_bit(Level::Manifold);
+inline constexpr std::uint8_t all_level_bits = level_bit(Level::Overlap) | level_bit(Level::Depth) |
+                                               level_bit(Level::Contact) |
+                                               level_bit(Level::Manifold);
 
 /// What a row can do beyond its entry and levels, as bits of `MethodInfo::traits`: named where
 /// the table is written, read through `MethodInfo`'s accessors.
 namespace trait {
-inline constexpr std::uint8_t runs_double = 1u << 0;    ///< has a double-precision version
-inline constexpr std::uint8_t warm_start = 1u << 1;     ///< keeps state between queries of a pair
+inline constexpr std::uint8_t runs_double = 1u << 0;  ///< has a double-precision version
+inline constexpr std::uint8_t warm_start = 1u << 1;   ///< keeps state between queries of a pair
 /// fit to answer a physics engine's contacts: one pair per call, robust, not the paper's literal
 /// equations (the engine plug-in offers these as its backends)
 inline constexpr std::uint8_t simulation = 1u << 2;
@@ -106,8 +106,8 @@ struct MethodInfo {
   Entry entry;            ///< how it is called
   /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth.
   std::uint8_t levels;
-  std::uint8_t traits;  ///< `trait` bits; read them through the accessors below
-  Accuracy accuracy;    ///< how exact it is by design
+  std::uint8_t traits;              ///< `trait` bits; read them through the accessors below
+  Accuracy accuracy;                ///< how exact it is by design
   PairFunction<float> run_float;    ///< `Entry::PerPair` only (else nullptr)
   PairFunction<double> run_double;  ///< `Entry::PerPair` only (else nullptr)
 
@@ -146,8 +146,7 @@ namespace detail {
 
 // The per-pair entry point of a method that keeps no state between queries.
 template <class T, Result<T> (*F)(const Triangle<T>&, const Triangle<T>&, const Query<T>&)>
-Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query,
-                    PairState*) {
+Result<T> stateless(const Triangle<T>& a, const Triangle<T>& b, const Query<T>& query, PairState*) {
   return F(a, b, query);
 }
 
@@ -164,8 +163,8 @@ Result<T> lin_canny_warm(const Triangle<T>& a, const Triangle<T>& b, const Query
 inline constexpr MethodInfo method_table[method_count] = {
     {Method::Dyop, "dyop", nullptr, nullptr,
      "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::simulation | trait::internal_edges |
-         trait::manifold_only,
+     all_level_bits,
+     trait::runs_double | trait::simulation | trait::internal_edges | trait::manifold_only,
      Accuracy::Exact, &detail::stateless<float, &dyop<float>>,
      &detail::stateless<double, &dyop<double>>},
     {Method::DyopFast, "dyop-fast", nullptr, nullptr,
@@ -177,15 +176,15 @@ inline constexpr MethodInfo method_table[method_count] = {
      trait::runs_double, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
      &detail::stateless<double, &dyop_paper<double>>},
     {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
-     "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum",
-     Entry::PerPair, all_level_bits, trait::runs_double | trait::warm_start | trait::simulation,
+     "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum", Entry::PerPair,
+     all_level_bits, trait::runs_double | trait::warm_start | trait::simulation,
      Accuracy::LocalDepth, &detail::lin_canny_warm<float>, &detail::lin_canny_warm<double>},
     {Method::Sat, "sat", nullptr, nullptr,
-     "minimum overlap over the six Minkowski-difference axes: the exact reference",
-     Entry::PerPair, all_level_bits,
-     trait::runs_double | trait::simulation | trait::internal_edges |
-         trait::manifold_only, Accuracy::Exact,
-     &detail::stateless<float, &sat<float>>, &detail::stateless<double, &sat<double>>},
+     "minimum overlap over the six Minkowski-difference axes: the exact reference", Entry::PerPair,
+     all_level_bits,
+     trait::runs_double | trait::simulation | trait::internal_edges | trait::manifold_only,
+     Accuracy::Exact, &detail::stateless<float, &sat<float>>,
+     &detail::stateless<double, &sat<double>>},
     {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
      all_level_bits, trait::runs_double | trait::simulation, Accuracy::ToTolerance,
      &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},
@@ -300,9 +299,8 @@ Result<T> penetrate(Method m, const Triangle<T>& a, const Triangle<T>& b,
 /// \cond EXPLICIT_INSTANTIATIONS
 extern template Result<float> penetrate(Method, const Triangle<float>&, const Triangle<float>&,
                                         const Query<float>&, PairState*);
-extern template Result<double> penetrate(Method, const Triangle<double>&,
-                                         const Triangle<double>&, const Query<double>&,
-                                         PairState*);
+extern template Result<double> penetrate(Method, const Triangle<double>&, const Triangle<double>&,
+                                         const Query<double>&, PairState*);
 /// \endcond
 
 }  // namespace dyop

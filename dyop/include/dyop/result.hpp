@@ -25,11 +25,11 @@ enum class Status : std::uint8_t { Separated, Touching, Penetrating, Invalid };
 
 /// Why a method answered `Status::Invalid`, for a caller to branch on (`describe` spells it out).
 enum class InvalidReason : std::uint8_t {
-  None,                ///< the result is not Invalid (or no method ran: a default `Result`)
-  NotPairMethod,       ///< `penetrate` was given a method with no per-pair entry (`Batch`)
-  PaperVerticalEdge,   ///< `dyop_paper`: a vertical pivot edge has no slope (paper eq. 3)
-  PaperVertexAtOrigin, ///< `dyop_paper`: the pivot edge's P at the origin (eq. 8 divides by |P|)
-  PaperSlopeOverflow,  ///< `dyop_paper`: the pivot edge too steep, its slope or depth not finite
+  None,                 ///< the result is not Invalid (or no method ran: a default `Result`)
+  NotPairMethod,        ///< `penetrate` was given a method with no per-pair entry (`Batch`)
+  PaperVerticalEdge,    ///< `dyop_paper`: a vertical pivot edge has no slope (paper eq. 3)
+  PaperVertexAtOrigin,  ///< `dyop_paper`: the pivot edge's P at the origin (eq. 8 divides by |P|)
+  PaperSlopeOverflow,   ///< `dyop_paper`: the pivot edge too steep, its slope or depth not finite
   /// A reference outside the library (an engine's own narrow phase, run by the testbed) gave a
   /// non-finite value: coordinates too large for its float arithmetic
   ReferenceNonFinite,
@@ -48,7 +48,7 @@ enum class Level : std::uint8_t {
 
 /// Every level, shallowest first.
 inline constexpr Level all_levels[] = {Level::Overlap, Level::Depth, Level::Contact,
-                                                Level::Manifold};
+                                       Level::Manifold};
 
 /// "overlap", "depth", "contact", "manifold": the spelling in tables, CSV and benchmark names.
 const char* name(Level level);
@@ -167,10 +167,10 @@ struct ManifoldPoint {
 /// margin: they name the face the method judged the pair on (a caller can try it first next time).
 template <class T>
 struct Manifold {
-  int point_count = 0;          ///< 0, 1 or 2
-  bool reference_is_a = true;   ///< the reference face belongs to A (false: to B)
-  std::uint8_t reference_edge = 0;  ///< caller's edge index of the reference face
-  std::uint8_t incident_edge = 0;   ///< caller's edge index of the incident edge (other triangle)
+  int point_count = 0;               ///< 0, 1 or 2
+  bool reference_is_a = true;        ///< the reference face belongs to A (false: to B)
+  std::uint8_t reference_edge = 0;   ///< caller's edge index of the reference face
+  std::uint8_t incident_edge = 0;    ///< caller's edge index of the incident edge (other triangle)
   Vec2<T> normal = Vec2<T>::Zero();  ///< unit, A to B (reference face normal, negated for B)
   std::array<ManifoldPoint<T>, 2> points{};  ///< first `point_count` are valid
 };
@@ -178,7 +178,7 @@ struct Manifold {
 /// The answer of every method, returned by value.
 template <class T>
 struct Result {
-  Status status = Status::Invalid;  ///< always valid
+  Status status = Status::Invalid;             ///< always valid
   InvalidReason reason = InvalidReason::None;  ///< Invalid only: why (`describe`); None otherwise
   /// Level ≥ Depth, not Invalid: signed; `-depth` when penetrating, the distance when apart
   /// (with `Apart::Gap`, the exact methods give a lower bound on it: the largest axis gap).
@@ -196,9 +196,9 @@ struct Result {
   /// defaults too.
   Vec2<T> witness_a = Vec2<T>::Zero();
   Vec2<T> witness_b = Vec2<T>::Zero();  ///< Level ≥ Contact: see `witness_a`
-  Feature feature_a;  ///< Level ≥ Contact: the feature of A that realises the answer
-  Feature feature_b;  ///< Level ≥ Contact: the feature of B that realises the answer
-  int iterations = 0;  ///< iterative methods (Lin–Canny, EPA): steps taken; 0 for the others
+  Feature feature_a;     ///< Level ≥ Contact: the feature of A that realises the answer
+  Feature feature_b;     ///< Level ≥ Contact: the feature of B that realises the answer
+  int iterations = 0;    ///< iterative methods (Lin–Canny, EPA): steps taken; 0 for the others
   Manifold<T> manifold;  ///< Level == Manifold, not Invalid (points: those within `margin`)
 };
 

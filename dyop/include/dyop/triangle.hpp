@@ -160,8 +160,8 @@ inline TriangleError Triangle<T>::check(const Vec2<T>& p0, const Vec2<T>& p1, co
 
 template <class T>
 inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw,
-                                              const std::array<Vec2<T>, 3>& normals, T c, T s,
-                                              const Vec2<T>& translation) {
+                                               const std::array<Vec2<T>, 3>& normals, T c, T s,
+                                               const Vec2<T>& translation) {
   // Inline: it runs once per triangle per contact update, where a call costs more than the work.
   Triangle<T> t = from_validated(ccw, normals);
   for (int i = 0; i < 3; ++i) {
@@ -175,7 +175,7 @@ inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw
 
 template <class T>
 inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw,
-                                              const std::array<Vec2<T>, 3>& normals) {
+                                               const std::array<Vec2<T>, 3>& normals) {
   Triangle<T> t;
   t.v_ = ccw;
   t.n_ = normals;
@@ -188,8 +188,8 @@ inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw
 
 template <class T>
 struct TriangleOrError {
-  TriangleError error = TriangleError::None;  ///< None when `triangle` is valid
-  Triangle<T> triangle;                       ///< valid only when `error == None`
+  TriangleError error = TriangleError::None;                ///< None when `triangle` is valid
+  Triangle<T> triangle;                                     ///< valid only when `error == None`
   bool ok() const { return error == TriangleError::None; }  ///< true when `error == None`
 };
 

@@ -55,8 +55,8 @@ bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
   const bool own_is_a = k < 3;
   const int edge_bit = own_is_a ? f.ta.input_edge(k) : 3 + f.tb.input_edge(k - 3);
   if ((q.internal_edges.edges >> edge_bit) & 1) return false;
-  const int other_closed = own_is_a ? q.internal_edges.closed_vertices >> 3
-                                   : q.internal_edges.closed_vertices & 7;
+  const int other_closed =
+      own_is_a ? q.internal_edges.closed_vertices >> 3 : q.internal_edges.closed_vertices & 7;
   if (other_closed == 0) return true;
   const int deep = overlap_on_axis(f, k).deep;
   const int vertex = own_is_a ? f.tb.input_vertex(deep) : f.ta.input_vertex(deep);

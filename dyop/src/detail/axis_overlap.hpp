@@ -7,9 +7,9 @@ namespace dyop::detail {
 
 template <class T>
 struct AxisOverlap {
-  int axis = -1;    // 0..2: A's edge `axis`; 3..5: B's edge `axis - 3`
-  T overlap = 0;    // max_A(u·a) − min_B(u·b) for u = frame.axis(axis); negative: apart
-  int deep = 0;     // CCW index of the other triangle's vertex that realises it
+  int axis = -1;  // 0..2: A's edge `axis`; 3..5: B's edge `axis - 3`
+  T overlap = 0;  // max_A(u·a) − min_B(u·b) for u = frame.axis(axis); negative: apart
+  int deep = 0;   // CCW index of the other triangle's vertex that realises it
 };
 
 // The least of three (first on ties) and the two comparisons that found it.

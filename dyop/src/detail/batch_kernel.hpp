@@ -423,8 +423,8 @@ struct SatOverLanes {
       V distance = s;
       Vec closest = axis;
       settle_apart(p, widest, apart, r_least, tol, distance, closest);
-      separated = L::either(separated,
-                            L::both(gap_in_band, L::gt(distance * r_least, L::splat(tol))));
+      separated =
+          L::either(separated, L::both(gap_in_band, L::gt(distance * r_least, L::splat(tol))));
       s = L::select(separated, distance, s);
       if constexpr (kDepth) {
         axis = {L::select(separated, closest.x, axis.x), L::select(separated, closest.y, axis.y)};

@@ -18,8 +18,8 @@ namespace dyop::detail {
 // inlined, 165.4 M and 76.7 M).
 template <class T, class Find>
 [[gnu::always_inline]] inline bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q,
-                                                  const std::array<T, 6>& overlap,
-                                                  int least, const Find& find, Result<T>& r) {
+                                                   const std::array<T, 6>& overlap, int least,
+                                                   const Find& find, Result<T>& r) {
   const T band = touching_band(f);
   const Level level = fields_level(q);
   r.status = status_of_overlap(overlap[least], band);
@@ -50,8 +50,8 @@ template <class T, class Find>
 // A touching or penetrating pair answered on axis `axis`.
 template <class T>
 [[gnu::always_inline]] inline void answer_on_axis(const PairFrame<T>& f, Level level,
-                                                  const std::array<T, 6>& overlap,
-                                                  int axis, Result<T>& r) {
+                                                  const std::array<T, 6>& overlap, int axis,
+                                                  Result<T>& r) {
   if (level >= Level::Contact) {
     // The same arithmetic again on one axis, now keeping the deep vertex.
     fill_from_axis(f, level, overlap_on_axis(f, axis), r);

@@ -38,8 +38,8 @@ class PointKeys {
   // `reference_edge`, `face_start` and `face_end`: the reference edge and its start and end
   // vertices; `incident_edge` and `incident_start`: the incident edge and its first vertex
   // (`incident_end` its second); every index the caller's. `reference_is_a`: whose face it is.
-  PointKeys(int reference_edge, int face_start, int face_end, int incident_edge,
-            int incident_start, int incident_end, bool reference_is_a) {
+  PointKeys(int reference_edge, int face_start, int face_end, int incident_edge, int incident_start,
+            int incident_end, bool reference_is_a) {
     const int ref_shift = reference_is_a ? 0 : 8;
     const int inc_shift = reference_is_a ? 8 : 0;
     const auto pair = [&](std::uint32_t ref, std::uint32_t inc) {
