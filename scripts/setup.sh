@@ -12,7 +12,8 @@ cd "$(dirname "$0")/.."
 packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
           libcli11-dev libgmp-dev nlohmann-json3-dev zlib1g-dev gnuplot-nox
           clang libclang-rt-14-dev   # for scripts/fuzz.sh (libFuzzer)
-          doxygen)                   # for scripts/api_docs.sh (the API reference)
+          doxygen                    # for scripts/api_docs.sh (the API reference)
+          clang-format)              # for scripts/format_check.sh (one code format)
 # More for one caller only, e.g. DYOP_EXTRA_PACKAGES=chromium (scripts/browser_test.sh): the
 # main command does not wait for them.
 read -r -a extra <<< "${DYOP_EXTRA_PACKAGES:-}"
