@@ -59,7 +59,7 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
     masks.motion = FoundMasks::not_found;
   } else {
     notice_fixture_count(masks, contact.world_fixtures());
-    if (masks.motion >= 0 && masks.motion != FoundMasks::not_found) {
+    if (masks.found() && masks.motion >= 0) {
       // Since the last answer afresh, which had not seen the count move or followed the motion
       // already: every evaluation in between kept its manifold (within the recycling distance of
       // that pose) or was a skip (then the motion is infinite).
@@ -71,7 +71,7 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
       }
     }
   }
-  return masks.motion == FoundMasks::not_found;
+  return !masks.found();
 }
 
 // True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under

@@ -102,7 +102,7 @@ inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b
   if (masks->fixed()) return true;  // changed only by a refresh, which recomputes
   if (masks->stamp != contact->internal_edges_stamp(setting.epoch)) return false;
   // Put off: the manifold was answered without masks (apart beyond the margin, the same under any).
-  if (masks->motion == FoundMasks::not_found) return true;
+  if (!masks->found()) return true;
   notice_fixture_count(*masks, contact->world_fixtures());
   return masks_hold(*masks, setting.config.recycle_distance);
 }

@@ -32,6 +32,8 @@ struct FoundMasks {
   std::uint16_t fixtures = 0;
 
   bool fixed() const { return stamp == fixed_stamp; }
+  // Found under `stamp` and still holding (settled, or followed since the count moved).
+  bool found() const { return motion != not_found; }
   // Found under `stamp` and not moved since the world's fixture count did: lent to the pair's
   // other contacts and read by `contact_internal_edges`.
   bool settled() const { return motion < 0; }
