@@ -29,15 +29,27 @@ struct EdgeRecord {
 };
 static_assert(sizeof(EdgeRecord) == 2 * sizeof(b2Vec2), "the record fills vertex slots 3 and 4");
 static_assert(b2_maxPolygonVertices >= 5, "a triangle leaves vertex slots 3 and 4 free");
+static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a vertex mixes into the key as one word");
 
-// The key of `fixture`'s record. Why the fixture's address: a shape copied out of a fixture
-// (`GetShape`) into another fixture carries the record along, and a default-constructed
-// `b2PolygonShape` leaves the slots uninitialised; neither may read as edge data. The fixture
-// owns the record, so no other fixture can hold a matching one while it lives. The constant
-// makes a key unlike the float coordinates the slots hold otherwise. Never 0.
+// The key of triangle fixture `fixture`'s record: its address, its body's and its three vertices
+// mixed. Why: a shape copied out of a fixture (`GetShape`) carries the record along, and a
+// default-constructed `b2PolygonShape` leaves the slots uninitialised; neither may read as edge
+// data. Box2D's allocators hand a destroyed fixture's address to the next one, so the address
+// alone would accept a copy recreated in its place; with the body and the vertices, a copy is
+// accepted only as the same triangle on the same body, where the record still describes it.
+// The constant makes a key unlike the float coordinates the slots hold otherwise. Never 0.
 inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
-  const auto address = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&fixture));
-  return address ^ 0x5EED'ED6E'DA7A'0001u;
+  constexpr std::uint64_t mix = 0x9E37'79B9'7F4A'7C15u;
+  const auto& polygon = *static_cast<const b2PolygonShape*>(fixture.GetShape());
+  std::uint64_t key = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&fixture));
+  key = (key ^ 0x5EED'ED6E'DA7A'0001u) * mix;
+  key = (key ^ reinterpret_cast<std::uintptr_t>(fixture.GetBody())) * mix;
+  for (int i = 0; i < 3; ++i) {
+    std::uint64_t vertex;
+    std::memcpy(&vertex, &polygon.m_vertices[i], sizeof vertex);
+    key = (key ^ vertex) * mix;
+  }
+  return key | 1;
 }
 
 // The fixed edge data of triangle fixture `fixture` (bits 0..2), or nothing: none written. Every

@@ -177,6 +177,24 @@ TEST(FixedEdgeData, ACopiedShapeCarriesNoEdgeDataIntoAnotherFixture) {
   EXPECT_FALSE(fixed_internal_edges(*other->CreateFixture(&box, 1.0f)).has_value());
 }
 
+// Box2D's allocators hand a destroyed fixture's memory to the next fixture made: a shape copied out
+// of a fixed fixture and given other vertices (`Set`) carries the record into a fixture at the
+// same address on the same body, and it must not read as that fixture's edge data.
+TEST(FixedEdgeData, ACopyRecreatedInTheFixturesPlaceWithOtherVerticesHasNoEdgeData) {
+  World world;
+  const std::vector<b2Body*> tiles = add_tiles(world, 2);
+  b2Fixture* fixed = tiles[0]->GetFixtureList();
+  ASSERT_TRUE(fixed_internal_edges(*fixed).has_value());
+  b2PolygonShape copy = *static_cast<const b2PolygonShape*>(fixed->GetShape());
+  const b2Fixture* const address = fixed;
+  tiles[0]->DestroyFixture(fixed);
+  const b2Vec2 elsewhere[3] = {{0.0f, 2.0f}, {1.0f, 2.0f}, {0.0f, 3.0f}};
+  copy.Set(elsewhere, 3);
+  b2Fixture* recreated = tiles[0]->CreateFixture(&copy, 0.0f);
+  ASSERT_EQ(recreated, address) << "the allocator did not reuse the address: nothing was tested";
+  EXPECT_FALSE(fixed_internal_edges(*recreated).has_value());
+}
+
 // Fixed grounds and bodies destroyed in every order, with steps between, and the world deleted
 // with bodies still in it: nothing is read after it is freed (this test's value is under ASan).
 TEST(FixedEdgeData, DestroyingFixedTrianglesInAnyOrderLeavesNothingDangling) {
