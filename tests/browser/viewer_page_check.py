@@ -7,8 +7,10 @@ headless Chromium opens the page at a step (#step=N), and this checks what it sh
   (#details, as a click on it does);
 - the body, contact, agreeing and marked counts it shows for both runners are the ones the C++
   side recorded for that step (the page counts them from the data it decoded);
+- the page opens framed where the bodies touch, readable: a typical fixture at least
+  READABLE_FIXTURE_PX across, and runner A's contact points in view when it has any;
 - a screenshot of the slide comparison has content: both runners' colours and many pixels that
-  are not background.
+  are not background, and so has one of tiles as it opens (1,494 bodies over 60 m).
 
 Usage: viewer_page_check.py DYOP [WORKDIR]. Exits non-zero with the reasons on standard error.
 Needs `chromium` on PATH (scripts/browser_test.sh installs it).
@@ -25,8 +27,9 @@ import zlib
 
 # Scenes and steps: the slide (the plug-in's internal-edge marks), mixed (circles, boxes and an
 # edge ground: every manifold type), paper (no Box2D world), rain-tall (1,500 bodies, fast
-# impacts: thousands of contacts to decode).
-CASES = [("slide", 40), ("mixed", 30), ("paper", 20), ("rain-tall", 60)]
+# impacts: thousands of contacts to decode), tiles (1,494 bodies spread over a tall, wide scene:
+# the opening frame).
+CASES = [("slide", 40), ("mixed", 30), ("paper", 20), ("rain-tall", 60), ("tiles", 60)]
 CHROMIUM = ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
             "--virtual-time-budget=10000", "--window-size=1200,1000"]
 # Of the screenshot's pixels, at least this share must differ from the page's backgrounds: the
@@ -35,6 +38,8 @@ MIN_CONTENT_SHARE = 0.03
 # The page shows the largest penetration in mm to 1 decimal from separations quantised to 0.1 mm
 # (report/viewer_page.hpp's separation_quantum): half a quantum plus the display's rounding.
 PENETRATION_MM = 0.05 + 0.05 + 1e-9
+# The page's READABLE_FIXTURE_PX, less the display's rounding to 0.1 px.
+READABLE_FIXTURE_PX = 32 - 0.05
 RUNNER_COLOURS = {"A (blue)": (59, 120, 201), "B (orange)": (224, 123, 31)}
 BACKGROUNDS = [(255, 255, 255), (250, 250, 250)]
 
@@ -141,6 +146,11 @@ def check_counts(dyop, workdir, scene, steps):
         if got is None or abs(float(got) - 1000 * frame["max_penetration"][k]) > PENETRATION_MM:
             fail("%s, step %d, runner %s: largest penetration shows %r mm, recorded %.4f mm"
                  % (scene, shown, summary["runners"][k], got, 1000 * frame["max_penetration"][k]))
+    fixture_px, in_view = element(dom, "fixture-px"), element(dom, "points-in-view")
+    if fixture_px is None or float(fixture_px) < READABLE_FIXTURE_PX:
+        fail("%s: opens with a typical fixture %r px across" % (scene, fixture_px))
+    if frame["touching"][0] > 0 and (in_view is None or int(in_view) == 0):
+        fail("%s: opens with none of runner A's contact points in view (%r)" % (scene, in_view))
     print("%s, step %d: %s" % (scene, shown, ", ".join(
         "%s %s bodies, %s contacts, %s agree, %s marked" % (
             summary["runners"][k], element(dom, "bodies-" + s), element(dom, "contacts-" + s),
@@ -149,9 +159,9 @@ def check_counts(dyop, workdir, scene, steps):
     return page
 
 
-def check_screenshot(page, workdir):
-    shot = os.path.join(workdir, "slide.png")
-    run_chromium(["--screenshot=" + shot, "file://%s#step=12&x=1.2&y=-7.6&scale=220" % page])
+def check_screenshot(page, workdir, name, address):
+    shot = os.path.join(workdir, name + ".png")
+    run_chromium(["--screenshot=" + shot, "file://%s#%s" % (page, address)])
     if not os.path.exists(shot):
         fail("no screenshot written")
         return
@@ -159,11 +169,11 @@ def check_screenshot(page, workdir):
     content = sum(1 for row in rows for p in row if p not in BACKGROUNDS)
     share = content / float(width * height)
     near = lambda p, c: all(abs(p[i] - c[i]) <= 12 for i in range(3))
-    for name, colour in RUNNER_COLOURS.items():
+    for runner, colour in RUNNER_COLOURS.items():
         if not any(near(p, colour) for row in rows for p in row):
-            fail("screenshot: no pixel of runner %s's colour %s" % (name, colour))
+            fail("%s screenshot: no pixel of runner %s's colour %s" % (name, runner, colour))
     if share < MIN_CONTENT_SHARE:
-        fail("screenshot: only %.1f %% of the pixels are not background" % (100 * share))
+        fail("%s screenshot: only %.1f %% of the pixels are not background" % (name, 100 * share))
     print("screenshot %s: %dx%d, %.1f %% not background" % (shot, width, height, 100 * share))
 
 
@@ -178,7 +188,8 @@ def main():
     workdir = os.path.abspath(sys.argv[2]) if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="dyop_view_")
     os.makedirs(workdir, exist_ok=True)
     pages = {scene: check_counts(dyop, workdir, scene, steps) for scene, steps in CASES}
-    check_screenshot(pages["slide"], workdir)
+    check_screenshot(pages["slide"], workdir, "slide", "step=12&x=1.2&y=-7.6&scale=220")
+    check_screenshot(pages["tiles"], workdir, "tiles", "step=40")
     if failures:
         print("viewer page check: %d failure(s)" % len(failures), file=sys.stderr)
         return 1
