@@ -226,11 +226,11 @@ void register_method(const MethodInfo& row) {
       const auto bm = [&](const char* spelling) { return "BM_" + std::string(spelling) + tail; };
       switch (row.entry) {
         case Entry::PerPair:
-          benchmark::RegisterBenchmark(bm(variant_name(row.method, false)).c_str(), bm_method<T>,
-                                       row.method, c, l, true);
+          benchmark::RegisterBenchmark(bm(adapters::variant_name(row.method, false)).c_str(),
+                                       bm_method<T>, row.method, c, l, true);
           if (row.warm_start()) {
-            benchmark::RegisterBenchmark(bm(variant_name(row.method, true)).c_str(), bm_warm<T>,
-                                         row.method, c, l);
+            benchmark::RegisterBenchmark(bm(adapters::variant_name(row.method, true)).c_str(),
+                                         bm_warm<T>, row.method, c, l);
           }
           if (l == Level::Manifold && row.manifold_only()) {
             // The manifold alone (`Query::witnesses` false): what b2CollidePolygons computes.

@@ -86,7 +86,6 @@ void check_method(Method m, double exact_tol) {
         EXPECT_EQ(f.misclassified, 0) << name(c);
         EXPECT_LE(below, exact_tol) << name(c);
         break;
-      case Accuracy::AbsoluteTolerance:  // not a per-pair method of the library
       case Accuracy::Approximate:
         break;  // heuristics: their figures are the result (finiteness is checked per pair)
     }

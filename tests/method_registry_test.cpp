@@ -19,10 +19,6 @@ TEST(MethodRegistry, EveryNameIsUniqueAndParsesBackToItsMethod) {
     EXPECT_TRUE(spellings.insert(row.name).second) << row.name;
     EXPECT_EQ(parse_method(row.name), row.method);
     EXPECT_STREQ(name(row.method), row.name);
-    if (row.warm_start()) {
-      EXPECT_TRUE(spellings.insert(row.cold_name).second) << row.cold_name;
-      EXPECT_TRUE(spellings.insert(row.warm_name).second) << row.warm_name;
-    }
   }
   EXPECT_FALSE(parse_method("lin-canny-warm").has_value());
   EXPECT_FALSE(parse_method("").has_value());
@@ -30,16 +26,6 @@ TEST(MethodRegistry, EveryNameIsUniqueAndParsesBackToItsMethod) {
   EXPECT_EQ(parse_method("sat", [](const MethodInfo& r) { return r.simulation(); }), Method::Sat);
   EXPECT_FALSE(parse_method("dyop-paper", [](const MethodInfo& r) { return r.simulation(); }));
   EXPECT_FALSE(parse_method("box2d").has_value());
-}
-
-TEST(MethodRegistry, VariantNamesSayColdOrWarmOnlyForWarmStartableMethods) {
-  EXPECT_STREQ(variant_name(Method::LinCanny, false), "lin-canny-cold");
-  EXPECT_STREQ(variant_name(Method::LinCanny, true), "lin-canny-warm");
-  for (const MethodInfo& row : method_table) {
-    if (row.warm_start()) continue;
-    EXPECT_STREQ(variant_name(row.method, false), row.name);
-    EXPECT_STREQ(variant_name(row.method, true), row.name);
-  }
 }
 
 TEST(MethodRegistry, PerPairRowsHaveTheirEntryPointsAndTheOthersNone) {

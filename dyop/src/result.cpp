@@ -28,9 +28,6 @@ const char* describe(InvalidReason r) {
       return "edge vertex P at the origin: paper eq. 8 divides by |P| = 0";
     case InvalidReason::PaperSlopeOverflow:
       return "slope overflows: edge too steep for slope-intercept form";
-    case InvalidReason::ReferenceNonFinite:
-      return "the reference returned a non-finite value (coordinates too large for its float "
-             "arithmetic)";
   }
   return "unknown invalid reason";
 }

@@ -15,15 +15,11 @@ constexpr bool kBox2DBuilt = false;
 
 bool operator==(const NarrowPhase& x, const NarrowPhase& y) { return x.method == y.method; }
 
-const char* name(const NarrowPhase& p) { return p.method ? dyop::name(*p.method) : kBox2DName; }
+const char* name(const NarrowPhase& p) { return p.method ? adapters::name(*p.method) : kBox2DName; }
 
 Call call_of(const NarrowPhase& p) {
   if (!p.method) return Call::Box2D;
   return info(p.method->method).entry == Entry::Batch ? Call::Batch : Call::PerPair;
-}
-
-Accuracy accuracy(const NarrowPhase& p) {
-  return p.method ? info(p.method->method).accuracy : Accuracy::AbsoluteTolerance;
 }
 
 bool has(const NarrowPhase& p, Level level) {

@@ -1,16 +1,17 @@
 #pragma once
 /// \file
 /// What the testbed compares on pairs: a narrow phase is a method of the library run one way
-/// (a registry `Variant`: `dyop/method.hpp`), or Box2D's own `b2CollidePolygons` — the production
-/// reference of every comparison, which the library does not link (in builds with Box2D, through
-/// `box2d_reference/`; float only, its whole manifold at every level). Every tool that lists
-/// what it compares (`dyop bench`, `dyop stress`, `dyop pairs`, the paper experiment) lists
-/// narrow phases from here, so the registry stays the library's and Box2D is named only here.
+/// (a `Variant` of a registry row: `adapters/variant.hpp`), or Box2D's own `b2CollidePolygons` —
+/// the production reference of every comparison, which the library does not link (in builds with
+/// Box2D, through `box2d_reference/`; float only, its whole manifold at every level). Every tool
+/// that lists what it compares (`dyop bench`, `dyop stress`, `dyop pairs`, the paper experiment)
+/// lists narrow phases from here, so the registry stays the library's and Box2D is named only here.
 
 #include <optional>
 #include <string_view>
 #include <vector>
 
+#include "adapters/variant.hpp"
 #include "dyop/method.hpp"
 
 namespace dyop::adapters {
@@ -38,15 +39,12 @@ struct NarrowPhase {
 bool operator==(const NarrowPhase& x, const NarrowPhase& y);
 inline bool operator!=(const NarrowPhase& x, const NarrowPhase& y) { return !(x == y); }
 
-/// Its spelling in every table and on the command line: the variant's (`dyop::name(Variant)`:
+/// Its spelling in every table and on the command line: the variant's (`name(Variant)`:
 /// "dyop", "lin-canny-warm", ...) or "box2d".
 const char* name(const NarrowPhase& p);
 
 /// How it is called.
 Call call_of(const NarrowPhase& p);
-
-/// How exact it is by design (Box2D: `Accuracy::AbsoluteTolerance`).
-Accuracy accuracy(const NarrowPhase& p);
 
 /// True when it answers at `level` (Box2D: its manifold is always whole, so it is asked, and
 /// timed, at `Level::Manifold` only).

@@ -18,7 +18,8 @@ namespace dyop::box2d {
 /// - no points: the distance from `b2Distance` (Box2D's GJK), its closest points and iterations;
 ///   Separated beyond `touching_tolerance`, else Touching (with a zero normal at distance 0).
 /// Valid fields: those of `Level::Contact` except the features; `manifold` is left empty.
-/// Invalid (with a reason) only if Box2D's float arithmetic gives a non-finite value.
+/// Invalid (a default `Result`: no answer, reason `None`) only if Box2D's float arithmetic gives a
+/// non-finite value.
 Result<float> collide_triangles(const Triangle<float>& a, const Triangle<float>& b);
 
 }  // namespace dyop::box2d

@@ -104,7 +104,7 @@ double time_per_pair(const NarrowPhase& p, const workloads::PairSet<T>& set, Lev
   const Query<T> q{level};
   switch (call_of(p)) {
     case Call::PerPair: {
-      const Variant v = *p.method;
+      const adapters::Variant v = *p.method;
       if (!v.warm) {
         return median_ns(n, passes, [&](int) {
           double sink = 0;

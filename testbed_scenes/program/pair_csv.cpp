@@ -107,7 +107,7 @@ std::string format_result_line(int row, const Result<double>& r) {
   if (r.status == Status::Invalid) {
     return format_error_line(row, r.reason != InvalidReason::None
                                       ? describe(r.reason)
-                                      : "the method could not handle this pair");
+                                      : "no answer: the method gave a non-finite value");
   }
   const bool overlap = r.status != Status::Separated;
   const bool penetrating = r.status == Status::Penetrating;

@@ -158,7 +158,7 @@ class PaperSection : public CompareSection {
   }
 
   // The figures of `which` (the first method's when it did not run).
-  const experiments::paper::MethodFigures& figures(const Variant& which) const {
+  const experiments::paper::MethodFigures& figures(const adapters::Variant& which) const {
     for (const auto& m : experiment_->methods) {
       if (m.method == adapters::NarrowPhase{which}) return m;
     }

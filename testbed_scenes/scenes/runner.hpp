@@ -35,7 +35,7 @@ inline std::optional<Runner> parse_runner(std::string_view s) {
 /// `b2CollidePolygons` for `Backend::Box2D`.
 inline adapters::NarrowPhase narrow_phase_of(box2d::Backend backend) {
   const std::optional<Method> m = box2d::method_of(backend);
-  return m ? adapters::NarrowPhase{Variant{*m, box2d::warm_start(backend)}}
+  return m ? adapters::NarrowPhase{adapters::Variant{*m, box2d::warm_start(backend)}}
            : adapters::NarrowPhase::box2d();
 }
 

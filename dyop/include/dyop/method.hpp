@@ -8,9 +8,9 @@
 /// Each row says how the method is called (`Entry`), in which precisions and at which query
 /// levels, whether it keeps state between queries of the same pair (warm start), whether it is
 /// fit to answer a physics engine's contacts, and how exact it is. Its `name` is its one spelling
-/// in every table, CSV, chart and command line; a warm-startable method run both ways is spelt by
-/// `variant_name`. Only the library's own methods are here: the references the testbed compares
-/// them with (a physics engine's own narrow phase) are named by the layers that link them.
+/// in every table, CSV, chart and command line. Only the library's own methods are here: the
+/// references the testbed compares them with (a physics engine's own narrow phase) and the
+/// spellings of its comparisons are the testbed's.
 
 #include <array>
 #include <cstddef>
@@ -58,9 +58,6 @@ enum class Accuracy : std::uint8_t {
   Exact,        ///< the exact answer up to rounding, invariant under rigid motions
   ToTolerance,  ///< converges to a stated tolerance, invariant under rigid motions (EPA)
   LocalDepth,   ///< exact distance; depth a local minimum that depends on the start (Lin–Canny)
-  /// Exact axes computed in world coordinates with absolute tolerances: depends on where the
-  /// pair is and how large it is (an engine's float narrow phase, as the testbed's references)
-  AbsoluteTolerance,
   Approximate,  ///< a heuristic: can misclassify pairs and misjudge depths (`dyop-fast`, paper)
 };
 
@@ -98,12 +95,7 @@ struct MethodInfo {
   Method method;  ///< the row's method
   /// Its one spelling: command line, tables, CSV columns, chart legends.
   const char* name;
-  /// Warm-startable methods only (`warm_start`): the spellings of its runs from no state and from
-  /// the pair's previous query, where a comparison times both; nullptr for the others.
-  const char* cold_name;
-  const char* warm_name;  ///< see `cold_name`
-  const char* summary;    ///< one line for lists and `--help`
-  Entry entry;            ///< how it is called
+  Entry entry;  ///< how it is called
   /// The query levels it answers, as `level_bit`s. Batch: Overlap and Depth.
   std::uint8_t levels;
   std::uint8_t traits;              ///< `trait` bits; read them through the accessors below
@@ -161,35 +153,27 @@ Result<T> lin_canny_warm(const Triangle<T>& a, const Triangle<T>& b, const Query
 
 /// The registry, in `Method` order.
 inline constexpr MethodInfo method_table[method_count] = {
-    {Method::Dyop, "dyop", nullptr, nullptr,
-     "DyOP-PD: the pivot's choice certified over all six axes, exact", Entry::PerPair,
-     all_level_bits,
+    {Method::Dyop, "dyop", Entry::PerPair, all_level_bits,
      trait::runs_double | trait::simulation | trait::internal_edges | trait::manifold_only,
      Accuracy::Exact, &detail::stateless<float, &dyop<float>>,
      &detail::stateless<double, &dyop<double>>},
-    {Method::DyopFast, "dyop-fast", nullptr, nullptr,
-     "the pivot heuristic alone, approximate by design", Entry::PerPair, all_level_bits,
+    {Method::DyopFast, "dyop-fast", Entry::PerPair, all_level_bits,
      trait::runs_double | trait::simulation, Accuracy::Approximate,
      &detail::stateless<float, &dyop_fast<float>>, &detail::stateless<double, &dyop_fast<double>>},
-    {Method::DyopPaper, "dyop-paper", nullptr, nullptr,
-     "the paper's equations 3-8 literally, for reproduction", Entry::PerPair, all_level_bits,
-     trait::runs_double, Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
+    {Method::DyopPaper, "dyop-paper", Entry::PerPair, all_level_bits, trait::runs_double,
+     Accuracy::Approximate, &detail::stateless<float, &dyop_paper<float>>,
      &detail::stateless<double, &dyop_paper<double>>},
-    {Method::LinCanny, "lin-canny", "lin-canny-cold", "lin-canny-warm",
-     "closest-feature tracking (Lin-Canny), warm-startable; depth a local minimum", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::warm_start | trait::simulation,
-     Accuracy::LocalDepth, &detail::lin_canny_warm<float>, &detail::lin_canny_warm<double>},
-    {Method::Sat, "sat", nullptr, nullptr,
-     "minimum overlap over the six Minkowski-difference axes: the exact reference", Entry::PerPair,
-     all_level_bits,
+    {Method::LinCanny, "lin-canny", Entry::PerPair, all_level_bits,
+     trait::runs_double | trait::warm_start | trait::simulation, Accuracy::LocalDepth,
+     &detail::lin_canny_warm<float>, &detail::lin_canny_warm<double>},
+    {Method::Sat, "sat", Entry::PerPair, all_level_bits,
      trait::runs_double | trait::simulation | trait::internal_edges | trait::manifold_only,
      Accuracy::Exact, &detail::stateless<float, &sat<float>>,
      &detail::stateless<double, &sat<double>>},
-    {Method::Epa, "epa", nullptr, nullptr, "GJK + EPA, to a tolerance", Entry::PerPair,
-     all_level_bits, trait::runs_double | trait::simulation, Accuracy::ToTolerance,
-     &detail::stateless<float, &epa<float>>, &detail::stateless<double, &epa<double>>},
-    {Method::Batch, "batch", nullptr, nullptr,
-     "sat's answer over structure-of-arrays input, AVX2 when the CPU has it", Entry::Batch,
+    {Method::Epa, "epa", Entry::PerPair, all_level_bits, trait::runs_double | trait::simulation,
+     Accuracy::ToTolerance, &detail::stateless<float, &epa<float>>,
+     &detail::stateless<double, &epa<double>>},
+    {Method::Batch, "batch", Entry::Batch,
      static_cast<std::uint8_t>(level_bit(Level::Overlap) | level_bit(Level::Depth)),
      trait::runs_double, Accuracy::Exact, nullptr, nullptr},
 };
@@ -212,44 +196,6 @@ constexpr const MethodInfo& info(Method m) { return method_table[static_cast<int
 /// The one spelling of `m` (`info(m).name`): "dyop", "dyop-fast", "dyop-paper", "lin-canny",
 /// "sat", "epa", "batch".
 constexpr const char* name(Method m) { return info(m).name; }
-
-/// The spelling of `m` run cold (`warm == false`) or warm-started: "lin-canny-cold" and
-/// "lin-canny-warm" for a warm-startable method, `name(m)` for the others.
-constexpr const char* variant_name(Method m, bool warm) {
-  const MethodInfo& row = info(m);
-  if (!row.warm_start()) return row.name;
-  return warm ? row.warm_name : row.cold_name;
-}
-
-/// A method as a comparison runs it: a warm-startable method (`info(method).warm_start()`) either
-/// cold, every query from no state, or warm, each query from the state the pair's previous query
-/// left; the others have one way only (`warm` false).
-struct Variant {
-  Method method = Method::Dyop;  ///< the registry's row
-  bool warm = false;             ///< warm-startable methods only: from the previous query's state
-};
-
-/// `variant_name(v.method, v.warm)`: "lin-canny-cold", "lin-canny-warm", "dyop", ...
-constexpr const char* name(const Variant& v) { return variant_name(v.method, v.warm); }
-
-/// True when `x` and `y` are the same way of running the same method.
-constexpr bool operator==(const Variant& x, const Variant& y) {
-  return x.method == y.method && x.warm == y.warm;
-}
-/// True when `x` and `y` differ in method or warmth.
-constexpr bool operator!=(const Variant& x, const Variant& y) { return !(x == y); }
-
-/// Every variant of the rows `keep(row)` accepts, in registry order, cold before warm.
-template <class Keep>
-std::vector<Variant> variants(Keep keep) {
-  std::vector<Variant> out;
-  for (const MethodInfo& row : method_table) {
-    if (!keep(row)) continue;
-    out.push_back({row.method, false});
-    if (row.warm_start()) out.push_back({row.method, true});
-  }
-  return out;
-}
 
 /// A choice of the registry's rows (the methods fit for simulation, those that answer single
 /// pairs, ...): true for the rows it keeps.

@@ -30,9 +30,6 @@ enum class InvalidReason : std::uint8_t {
   PaperVerticalEdge,    ///< `dyop_paper`: a vertical pivot edge has no slope (paper eq. 3)
   PaperVertexAtOrigin,  ///< `dyop_paper`: the pivot edge's P at the origin (eq. 8 divides by |P|)
   PaperSlopeOverflow,   ///< `dyop_paper`: the pivot edge too steep, its slope or depth not finite
-  /// A reference outside the library (an engine's own narrow phase, run by the testbed) gave a
-  /// non-finite value: coordinates too large for its float arithmetic
-  ReferenceNonFinite,
 };
 
 /// A static, human-readable description of `r` ("unknown method", ...).
