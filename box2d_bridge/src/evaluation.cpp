@@ -47,8 +47,8 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
 // at once, and a contact with a static body then tells the others
 // (`TriangleContact::internal_edges_stamp_moved`); a new fixture count tells nobody (every contact
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
-// contacts a broad phase makes never come within the margin, and a static triangle's masks cost
-// about 11,000 instructions (a query of the world's broad phase and the covering tests).
+// contacts a broad phase makes never come within the margin, and finding a static triangle's
+// masks costs a query of the world's broad phase and the covering tests.
 bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
                    const ContactMemory& memory, FoundMasks& masks, const TriangleContact& contact,
                    const ManifoldRecycling* recycling) {

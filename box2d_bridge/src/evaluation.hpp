@@ -31,9 +31,8 @@ namespace dyop::box2d::detail {
 void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory);
 
 // The first evaluation that runs the backend on two triangles: valid ones or not
-// (`Shapes::Triangles`, `Shapes::InvalidTriangles`). Deferred until then: in a tall rain 45,000
-// contacts are made in 150 steps and about 12,800 of them ever run the backend, while a
-// triangle's check costs about 110 instructions.
+// (`Shapes::Triangles`, `Shapes::InvalidTriangles`). Deferred until then: most contacts a broad
+// phase makes never run the backend (docs/measurements.md, "Choices in the code").
 void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory);
 
 // The setting's method on two valid triangles (`b_in_a`: B's body frame given in A's), with the

@@ -23,9 +23,9 @@ constexpr float flat_outline_sine = 1e-3f;
 
 // A non-static body with at most this many fixtures has its list walked instead of the broad
 // phase queried. Why: the result is the same (every triangle of the body is a candidate; only
-// those touching it count), and a walk costs tens of instructions per fixture against about 3,500
-// for one query of a ground's broad phase (callgrind): below a few dozen fixtures the walk is
-// cheaper, and a split box or a star (2 to 10 fixtures) never pays for a query. A static body
+// those touching it count), and a walk costs tens of instructions per fixture against thousands
+// for one query of a ground's broad phase: below a few dozen fixtures the walk is cheaper, and a
+// split box or a star (2 to 10 fixtures) never pays for a query. A static body
 // always queries: its group spans the other static bodies.
 constexpr int walked_body_fixtures = 16;
 
@@ -230,9 +230,9 @@ StretchesCovered opposite_cover_next_to(const std::vector<Segment>& edges, const
 
 // The same for the own triangle's edge line `i`, whose ends' tests were made once per vertex
 // (`Segment::on_own_lines`): a vertex is shared by two edges of its triangle, and most edges lie
-// on no own line. Callgrind, 150 steps, Collide: tiles 105.0 M → 100.8 M, slide 41.2 M → 40.6 M.
-// Not one template with `opposite_cover_next_to`: each tests first what rejects cheapest for its
-// callers (here the bit, there the direction; one order for both cost tiles 1.5 % or 3.4 %).
+// on no own line. Not one template with `opposite_cover_next_to`: each tests first what rejects
+// cheapest for its callers, here the bit, there the direction (measured: docs/measurements.md,
+// "Choices in the code").
 void opposite_cover_own(const std::vector<Segment>& edges, const Line& line, int i,
                         std::vector<Interval>& out) {
   out.clear();
@@ -267,9 +267,8 @@ struct VertexOutline {
   // T-junction) passes through it. Only the stretch next to `at` counts: a neighbour's edge
   // covered elsewhere in part still bounds the outline here. What covers such a stretch passes
   // through `at` or ends there too, so the cover is looked for among these edges alone. Stops
-  // once two pieces enter or two leave: the outline there is no simple one (`flat_or_reflex`).
-  // Callgrind, 150 steps, Collide, against a cover built whole for every edge and searched
-  // after: tiles 97.8 M → 95.6 M, slide 41.0 M → 40.6 M.
+  // once two pieces enter or two leave: the outline there is no simple one (`flat_or_reflex`),
+  // cheaper than a cover built whole for every edge and searched after.
   void gather(const std::vector<Segment>& edges, const b2Vec2& at, float tol) {
     const float tol_sq = tol * tol;
     thread_local std::vector<Segment> near;  // the edges through `at`

@@ -38,11 +38,8 @@ constexpr float recycle_cosine = 0.98f;
 // only. Why: a kept manifold misses a vertex coming within the skins until the pose has moved the
 // distance, and a body that sinks that much deeper into static ground meets Box2D 2.4's
 // time-of-impact pass, which sweeps moving bodies against static ones (and rescans the contact
-// list for every event). Callgrind, a tall rain into a triangulated bin, 150 steps, seeds 1 and 4:
-// contact updates in `SolveTOI` 14,565 and 12,620 with every pair at 5 mm, 13,630 and 11,528
-// with static pairs at 1 mm (Box2D's own contact: 13,284 and 12,632), `SolveTOI` 1.09 →
-// 1.01 and 0.96 → 0.90 of Box2D's own; the pyramid's narrow phase 0.432 → 0.442 of Box2D's own
-// (its ground contacts keep less). Not keeping static pairs at all cost the pyramid 0.52.
+// list for every event); not keeping static pairs at all costs resting piles more (measured:
+// docs/measurements.md, "Choices in the code").
 constexpr float static_pair_share = 0.2f;
 
 // What a world's contact remembers of the manifold it keeps: 24 bytes.

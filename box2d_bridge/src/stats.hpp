@@ -30,9 +30,9 @@ class Counter {
 
 // `Stats`, field for field, as counters, but for the skips: a skip is counted once, by backend
 // and kind (`skipped`), and `stats()` adds it to its backend's `triangle_pairs` (which here
-// counts the other evaluations). Why: a tall rain skips 723,000 of its 872,000 evaluations in
-// 150 steps, and one increment fewer each is 0.5 % of its narrow phase's instructions
-// (callgrind, Collide 407.8 M → 405.6 M).
+// counts the other evaluations). Why: most evaluations in a falling scene are skips, and one
+// increment fewer each shows in its narrow phase (measured: docs/measurements.md, "Choices in the
+// code").
 struct ThreadCounters {
   std::array<Counter, backend_count> triangle_pairs;
   Counter polygon_pairs;

@@ -26,10 +26,8 @@ constexpr std::size_t allocator_class = 256;
 
 // The body of `p` and `q` whose contact list is the shorter to walk for their contacts with each
 // other: the non-static one when the other is static (a ground's list holds every body on it, a
-// moving body's is short), else the shorter, found by stepping both lists together. Callgrind,
-// full runs, Collide, against stepping them always: slide 93.3 M → 91.8 M, tiles 214.7 M →
-// 214.1 M. (Comparing fixtures before reading a contact's type, in the lending walk, did not
-// pay: tiles +0.6 %.)
+// moving body's is short), else the shorter, found by stepping both lists together (measured:
+// docs/measurements.md, "Choices in the code").
 const b2Body& shorter_contact_list(const b2Body& p, const b2Body& q) {
   if (p.GetType() == b2_staticBody) return q;
   if (q.GetType() == b2_staticBody) return p;

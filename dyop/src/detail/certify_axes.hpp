@@ -14,8 +14,7 @@ namespace dyop::detail {
 // The status from the least overlap of all six axes (`least`); a pair found apart is answered
 // whole here (true), a touching or penetrating one is left to the caller (false).
 // Always inlined: the plain path then costs what it did before the allowed-axes rule split it
-// up (callgrind, 150 steps, Collide: as calls, rain 166.5 M and pyramid 77.5 M instructions;
-// inlined, 165.4 M and 76.7 M).
+// up (measured: docs/measurements.md, "Choices in the code").
 template <class T, class Find>
 [[gnu::always_inline]] inline bool answer_if_apart(const PairFrame<T>& f, const Query<T>& q,
                                                    const std::array<T, 6>& overlap, int least,
@@ -99,14 +98,13 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   // then the least of all, along a direction the outline allows, and whether the other triangle
   // reaches that edge does not matter (an edge it does not reach is refused only as a larger
   // push through the body). Otherwise the full rule, out of line. A pyramid of split boxes has
-  // masks on every pair: one or two mask checks each keep it near the plain cost (callgrind,
-  // 150 steps, Collide: 146 M instructions with the full rule on every pair, 95 M with both
-  // checks reaching the edges, 76.6 M plain).
+  // masks on every pair: one or two mask checks each keep it near the plain cost (measured:
+  // docs/measurements.md, "Choices in the code").
   if (q.internal_edges.any() && overlap[least] >= -q.margin &&
       !(axis_allowed(f, q, least) &&
         (reference.axis == least || axis_allowed(f, q, reference.axis)))) {
     // Assigned, not returned: one named result on every path keeps the return value optimisation
-    // of the plain path (returning the call's value here cost the plain path 6 %).
+    // of the plain path (measured: docs/measurements.md, "Choices in the code").
     r = certify_allowed_axes(f, q, overlap, find);
     return r;
   }
