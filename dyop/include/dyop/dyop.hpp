@@ -12,10 +12,9 @@
 /// - `dyop` (exact): all six candidate axes certify the minimum, so touching and penetrating
 ///   answers equal `sat`'s bit for bit; for a pair found apart the pivot's features (its vertex of
 ///   one triangle against its edge of the other, both ways) give the closest pair, accepted when
-///   the gap along their direction proves it (else all 18 vertex–edge pairs decide). Trying the
-///   pivot edges' axes first with an early exit, as the paper's selection suggests, was measured
-///   slower in every input class (Overlap level, float: 32–47 ns against 18–19 ns for all six axes
-///   at once, branch-free): choosing the pivot's edges costs more than the axes it could skip.
+///   the gap along their direction proves it (else all 18 vertex–edge pairs decide). The six
+///   axes are evaluated at once, branch-free, not the pivot's edges first: choosing them costs
+///   more than the axes an early exit could skip (docs/paper.md).
 /// - `dyop_fast` (approximate by design, the paper's heuristic with corrected maths): the depth in
 ///   a direction is the signed distance of the pivot's vertex from the pivot's edge line; the pair
 ///   penetrates when a pivot vertex lies inside the other triangle (orientation signs, not the
