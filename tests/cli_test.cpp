@@ -2,10 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "dyop/batch.hpp"
 #include "program/pair_csv.hpp"
 #include "program/pairs_command.hpp"
 
@@ -138,6 +141,64 @@ TEST(PairsCommand, MethodThatCannotHandleAPairReportsAnErrorLineWithItsReason) {
   const PairsSummary s = run_pairs({{method("dyop-paper")}, false, false}, in, out);
   EXPECT_EQ(s.errors, 1);
   EXPECT_NE(out.str().find("1,error"), std::string::npos) << out.str();
+}
+
+// Seeded pairs of unit-sized triangles, overlapping or apart, as CSV lines to 17 digits, with a
+// bad line and a degenerate pair among them.
+std::string random_pairs_csv(int count) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::string csv = "0,0,1,0,0,1\n0,0, 1,1, 2,2,  2,0, 3,0, 2,1\n";
+  for (int k = 0; k < count; ++k) {
+    const double dx = 1.5 * coordinate(rng), dy = 1.5 * coordinate(rng);
+    for (int v = 0; v < 6; ++v) {
+      char field[64];
+      std::snprintf(field, sizeof field, "%.17g,%.17g%s", coordinate(rng) + (v >= 3 ? dx : 0),
+                    coordinate(rng) + (v >= 3 ? dy : 0), v == 5 ? "\n" : ",");
+      csv += field;
+    }
+  }
+  return csv;
+}
+
+std::string run_to_text(const PairsOptions& options, const std::string& csv) {
+  std::istringstream in(csv);
+  std::ostringstream out;
+  run_pairs(options, in, out);
+  return out.str();
+}
+
+// The batch kernel answers the whole input in one call: every kernel this CPU runs writes the
+// same lines, and they are `sat`'s answers (same status, separations within rounding).
+TEST(PairsCommand, BatchGivesEveryKernelsSameLinesAndSatsAnswers) {
+  const std::string csv = random_pairs_csv(500);
+  for (const bool use_float : {false, true}) {
+    const std::string portable =
+        run_to_text({{method("batch")}, use_float, false, BatchKernel::Portable}, csv);
+    for (const BatchKernel k : {BatchKernel::Auto, BatchKernel::Avx2, BatchKernel::Avx512}) {
+      if (!batch_kernel_available(k)) continue;
+      EXPECT_EQ(run_to_text({{method("batch")}, use_float, false, k}, csv), portable)
+          << name(k) << (use_float ? ", float" : ", double");
+    }
+    const auto batch = lines_of(portable);
+    const auto sat = lines_of(run_to_text({{method("sat")}, use_float, false}, csv));
+    ASSERT_EQ(batch.size(), sat.size());
+    const double rounding = use_float ? 1e-5 : 1e-12;  // the pairs are about 1 m across
+    int compared = 0;
+    for (std::size_t i = 1; i < batch.size(); ++i) {
+      std::vector<std::string> x, y;
+      for (auto* cells : {&x, &y}) {
+        std::istringstream line(cells == &x ? batch[i] : sat[i]);
+        for (std::string cell; std::getline(line, cell, ',');) cells->push_back(cell);
+      }
+      ASSERT_GE(x.size(), 3u);
+      EXPECT_EQ(x[0] + x[1] + x[2], y[0] + y[1] + y[2]) << batch[i] << " | " << sat[i];
+      if (x[1] != "ok" || y.size() < 5) continue;
+      EXPECT_NEAR(std::stod(x[4]), std::stod(y[4]), rounding) << batch[i] << " | " << sat[i];
+      ++compared;
+    }
+    EXPECT_GT(compared, 400);
+  }
 }
 
 }  // namespace

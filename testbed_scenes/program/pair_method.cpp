@@ -12,8 +12,10 @@ Vec2<double> widen(const Vec2<float>& v) { return v.cast<double>(); }
 std::vector<PairMethod> pairs_methods() {
   std::vector<PairMethod> out;
   for (const adapters::NarrowPhase& p : adapters::narrow_phases(nullptr, true)) {
-    if (!adapters::runs_pairs<float>(p) || (p.method && p.method->warm)) continue;  // cold only
-    // A method's own spelling ("lin-canny", not its cold variant's): one way to run each here.
+    const bool batch = adapters::call_of(p) == adapters::Call::Batch;
+    if (!(batch || adapters::runs_pairs<float>(p)) || (p.method && p.method->warm)) continue;
+    // Cold only: one way to run each here.
+    // A method's own spelling ("lin-canny", not its cold variant's).
     const char* spelling = p.method ? dyop::name(p.method->method) : adapters::name(p);
     out.push_back(
         {p, spelling, adapters::pair_function<double>(p), adapters::pair_function<float>(p)});

@@ -1,16 +1,20 @@
 #include "program/pairs_command.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "program/commands.hpp"
 #include "program/pair_csv.hpp"
 #include "report/format.hpp"
 #include "report/output.hpp"
+#include "workloads/batch_arrays.hpp"
 
 namespace dyop::cli {
 namespace {
@@ -42,6 +46,37 @@ void write_table_line(std::ostream& out, const std::string& method, const std::s
       << cells[7] << '\n';
 }
 
+// The batch kernel's answers (Level::Depth) for every data line of `lines` whose triangles are
+// valid in precision T, all in one call, in line order; nothing for the other lines, and for every
+// line when the kernel cannot run (`error`).
+template <class T>
+std::vector<std::optional<Result<double>>> batch_answers(const std::vector<PairLine>& lines,
+                                                         BatchKernel kernel, BatchError& error) {
+  std::vector<std::size_t> rows;  // the lines the kernel answers
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    if (lines[k].kind == PairLine::Kind::Data &&
+        make_pair_triangles<T>(lines[k].values).message.empty()) {
+      rows.push_back(k);
+    }
+  }
+  workloads::BatchArrays<T> arrays(rows.size(), [&](std::size_t k, int side, int i) {
+    const std::array<double, pair_fields>& v = lines[rows[k]].values;
+    return Vec2<T>(static_cast<T>(v[6 * side + 2 * i]), static_cast<T>(v[6 * side + 2 * i + 1]));
+  });
+  std::vector<std::optional<Result<double>>> out(lines.size());
+  error = penetrate_batch(arrays.pairs(), Level::Depth, arrays.out(), kernel);
+  if (error != BatchError::None) return out;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    Result<double> r;
+    r.status = arrays.status[k];
+    r.separation = arrays.separation[k];
+    r.depth = r.status == Status::Separated ? 0.0 : std::max(0.0, -r.separation);
+    r.normal = Vec2<double>(arrays.normal_x[k], arrays.normal_y[k]);
+    out[rows[k]] = r;
+  }
+  return out;
+}
+
 }  // namespace
 
 PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostream& out) {
@@ -64,9 +99,21 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
     }
   };
 
-  std::string text;
-  for (int row = 1; std::getline(in, text); ++row) {
-    const PairLine line = parse_pair_line(text);
+  // Every line first: the batch kernel answers the whole input in one call.
+  std::vector<PairLine> lines;
+  for (std::string text; std::getline(in, text);) lines.push_back(parse_pair_line(text));
+  std::vector<std::optional<Result<double>>> batch[2];  // float, double
+  BatchError batch_error[2] = {BatchError::None, BatchError::None};
+  for (const PairMethod& b : options.methods) {
+    if (!b.batch()) continue;
+    batch[0] = batch_answers<float>(lines, options.batch_kernel, batch_error[0]);
+    if (!options.use_float) {
+      batch[1] = batch_answers<double>(lines, options.batch_kernel, batch_error[1]);
+    }
+  }
+
+  for (int row = 1; row <= static_cast<int>(lines.size()); ++row) {
+    const PairLine& line = lines[row - 1];
     if (line.kind == PairLine::Kind::Skip) continue;
     if (line.kind == PairLine::Kind::Error) {
       for (const PairMethod& b : options.methods)
@@ -77,10 +124,20 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
     const PairTriangles<double> in_double = make_pair_triangles<double>(line.values);
     const PairTriangles<float> in_float = make_pair_triangles<float>(line.values);
     for (const PairMethod& b : options.methods) {
-      const bool use_float = options.use_float || b.run_double == nullptr;
+      const bool use_float = options.use_float || (!b.batch() && b.run_double == nullptr);
       const std::string& message = use_float ? in_float.message : in_double.message;
       if (!message.empty()) {
         emit(b, format_error_line(row, message), false);
+        continue;
+      }
+      if (b.batch()) {
+        const int p = use_float ? 0 : 1;
+        const std::optional<Result<double>>& r = batch[p][row - 1];
+        if (r) {
+          emit(b, format_result_line(row, *r), r->status != Status::Invalid);
+        } else {
+          emit(b, format_error_line(row, describe(batch_error[p])), false);
+        }
         continue;
       }
       const Result<double> r = use_float
@@ -103,7 +160,17 @@ struct PairsArgs {
   std::string input;
   std::string output;
   std::string format = "csv";
+  std::string batch_kernel = "auto";
 };
+
+// The batch kernel spelt `s` (`name(BatchKernel)`), or nothing.
+std::optional<BatchKernel> parse_batch_kernel(const std::string& s) {
+  for (BatchKernel k :
+       {BatchKernel::Auto, BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
+    if (s == name(k)) return k;
+  }
+  return std::nullopt;
+}
 
 int run(const PairsArgs& args) {
   PairsOptions options;
@@ -114,6 +181,17 @@ int run(const PairsArgs& args) {
   }
   options.use_float = args.precision == "float";
   options.table = args.format == "table";
+  options.batch_kernel = *parse_batch_kernel(args.batch_kernel);  // checked by the option
+  if (std::any_of(options.methods.begin(), options.methods.end(),
+                  [](const PairMethod& m) { return m.batch(); })) {
+    if (!batch_kernel_available(options.batch_kernel)) {
+      std::cerr << "dyop pairs: batch kernel " << args.batch_kernel << ": "
+                << describe(BatchError::KernelUnavailable) << '\n';
+      return exit_usage_error;
+    }
+    std::cerr << "dyop pairs: batch kernel " << name(batch_kernel_used(options.batch_kernel))
+              << '\n';
+  }
 
   std::ifstream in_file;
   if (!args.input.empty() && args.input != "-") {
@@ -158,6 +236,11 @@ void add_pairs_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--output,-o", args->output, "Output file (default: standard output)");
   cmd->add_option("--format", args->format, "csv: the contract; table: aligned columns to read")
       ->check(CLI::IsMember({"csv", "table"}))
+      ->capture_default_str();
+  cmd->add_option("--batch-kernel", args->batch_kernel,
+                  "The batch method's kernel: auto (the fastest here), portable, avx2 or avx512; "
+                  "every kernel gives the same bits")
+      ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
       ->capture_default_str();
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }

@@ -6,6 +6,7 @@
 #include <iosfwd>
 #include <vector>
 
+#include "dyop/batch.hpp"
 #include "program/pair_method.hpp"
 
 namespace dyop::cli {
@@ -14,6 +15,9 @@ struct PairsOptions {
   std::vector<PairMethod> methods;  ///< one: the CSV contract; several: a `method` column first
   bool use_float = false;           ///< convert input to float and run the float instantiation
   bool table = false;               ///< aligned human-readable table instead of CSV
+  /// The kernel the batch method runs (`--batch-kernel`): the fastest here by default; one that
+  /// cannot run here answers every row with an error line.
+  BatchKernel batch_kernel = BatchKernel::Auto;
 };
 
 /// Output lines written, and how many of them are errors.
