@@ -11,8 +11,8 @@
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_mesh.hpp"
-#include "fuzz_input.hpp"
-#include "scenes/world.hpp"
+#include "byte_reader.hpp"
+#include "worlds/world.hpp"
 
 namespace dyop::fuzz {
 
@@ -201,7 +201,7 @@ class Player {
   }
 
   void fold(int w) {
-    result_.hash = (result_.hash ^ scenes::state_hash(slots_[w].bodies)) * 0x100000001b3ull;
+    result_.hash = (result_.hash ^ worlds::state_hash(slots_[w].bodies)) * 0x100000001b3ull;
   }
   void end_world(int w, bool destroy_bodies) {
     Slot& s = slots_[w];

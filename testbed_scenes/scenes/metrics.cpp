@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace dyop::scenes {
 
@@ -32,25 +31,6 @@ void PenetrationTally::add(double depth) {
   max_ = std::max(max_, depth);
   sum_ += depth;
   ++count_;
-}
-
-void Fnv1a::bytes(const unsigned char* p, std::size_t n) {
-  for (std::size_t i = 0; i < n; ++i) {
-    h_ ^= p[i];
-    h_ *= 0x100000001b3ull;
-  }
-}
-
-void Fnv1a::add(float v) {
-  unsigned char b[sizeof v];
-  std::memcpy(b, &v, sizeof v);
-  bytes(b, sizeof b);
-}
-
-void Fnv1a::add(double v) {
-  unsigned char b[sizeof v];
-  std::memcpy(b, &v, sizeof v);
-  bytes(b, sizeof b);
 }
 
 SlideFigures summarize_sliders(std::vector<SliderFigures> sliders) {

@@ -16,6 +16,7 @@
 #include "dyop/box2d.hpp"
 #include "dyop/result.hpp"
 #include "scenes/runner.hpp"
+#include "worlds/fnv1a.hpp"
 
 namespace dyop::scenes {
 
@@ -174,17 +175,8 @@ class PenetrationTally {
 /// errors (max, mean, misclassified, invalid).
 void add_accuracy(const ErrorTally& errors, const PenetrationTally& penetration, SceneMetrics& m);
 
-/// FNV-1a (64-bit), fed value by value with the bit patterns of floats.
-class Fnv1a {
- public:
-  void add(float v);
-  void add(double v);
-  std::uint64_t value() const { return h_; }
-
- private:
-  void bytes(const unsigned char* p, std::size_t n);
-  std::uint64_t h_ = 0xcbf29ce484222325ull;
-};
+/// The hash of a scene's final state (`SceneMetrics::hash`), also the paper scene's.
+using worlds::Fnv1a;
 
 /// True when every floating-point figure of `m` is finite.
 bool all_finite(const SceneMetrics& m);

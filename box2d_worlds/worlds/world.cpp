@@ -1,4 +1,4 @@
-#include "scenes/world.hpp"
+#include "worlds/world.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <string>
 
 #include "dyop/box2d.hpp"
-#include "scenes/metrics.hpp"
+#include "worlds/fnv1a.hpp"
 
-namespace dyop::scenes {
+namespace dyop::worlds {
 
 World::World(const b2Vec2& gravity) : world_(gravity) { world_.SetAllowSleeping(false); }
 
@@ -138,4 +138,4 @@ bool is_triangle(const b2Fixture* fixture) {
          static_cast<const b2PolygonShape*>(fixture->GetShape())->m_count == 3;
 }
 
-}  // namespace dyop::scenes
+}  // namespace dyop::worlds
