@@ -144,7 +144,7 @@ class SkipSection : public CompareSection {
          "starts from older features. Without the cache every walk starts cold and the other "
          "skips only avoid pairs beyond reach (whose manifold is empty from any start) or "
          "repeat an identical evaluation, so `lin-canny` with every skip but `lin-canny-cache` "
-         "is bit-identical to `none` (checked in `tests/scenes/scene_skips_test.cpp`). In this "
+         "is bit-identical to `none` (checked in `tests/testbed/scene_skips_test.cpp`). In this "
          "run, hashes differ in "
       << join(differ) << " and are equal in " << join(same)
       << ": a different local minimum gives a slightly different contact, and the scene then "

@@ -18,10 +18,4 @@ SceneWorld::SceneWorld(std::string_view name, std::uint64_t seed)
   (*build)(*world_, rng);
 }
 
-std::uint64_t run_scene_world(std::string_view name, std::uint64_t seed, int steps) {
-  SceneWorld w(name, seed);
-  for (int i = 0; i < steps; ++i) w.step();
-  return w.hash();
-}
-
 }  // namespace dyop::scenes

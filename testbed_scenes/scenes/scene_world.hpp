@@ -31,7 +31,4 @@ class SceneWorld {
   std::unique_ptr<World> world_;
 };
 
-/// Builds scene `name` for `seed`, steps it `steps` times and returns its final `state_hash`.
-std::uint64_t run_scene_world(std::string_view name, std::uint64_t seed, int steps);
-
 }  // namespace dyop::scenes

@@ -1,10 +1,11 @@
 #pragma once
 /// \file
-/// The one random generator of the testbed, the tests, the benchmarks, the stress runs and the
-/// scenes: SplitMix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators",
-/// 2014), chosen over the standard library's engines and distributions because the distributions
-/// are not specified bit for bit: a seed must give the same pairs, the same scene and the same
-/// hash with any compiler and standard library.
+/// The one random generator of the testbed, the solver's and the testbed's tests, the benchmarks,
+/// the stress runs and the scenes (the bridge's tests, built without the testbed, draw from
+/// std::mt19937_64: tests/box2d_bridge/support/draws.hpp): SplitMix64 (Steele, Lea & Flood,
+/// "Fast splittable pseudorandom number generators", 2014), chosen over the standard library's
+/// engines and distributions because the distributions are not specified bit for bit: a seed must
+/// give the same pairs, the same scene and the same hash with any compiler and standard library.
 ///
 /// Every draw is built from the 64 random bits with + − × ÷ and √ only, which IEEE 754 rounds
 /// exactly, except `log_uniform`, which goes through `std::pow` (the C library's last bit).

@@ -4,7 +4,8 @@
 #include <iostream>
 #include <vector>
 
-#include "scene.hpp"
+#include "support/per_contact.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "dyop/box2d.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -74,9 +75,9 @@ float top_motion(Ground g, int base) {
   return moved;
 }
 
-class ExactBackend : public ::testing::TestWithParam<Backend> {};
+class ExactBackendOnTiledGround : public ::testing::TestWithParam<Backend> {};
 
-TEST_P(ExactBackend, StacksAndPyramidsStandOnTiledGroundsAsOnOnePiece) {
+TEST_P(ExactBackendOnTiledGround, StacksAndPyramidsStandOnTiledGroundsAsOnOnePiece) {
   ASSERT_TRUE(install(GetParam()).ok());
   for (const int base : {6, -8}) {
     const float one_piece = top_motion(Ground::OnePiece, base);
@@ -93,7 +94,8 @@ TEST_P(ExactBackend, StacksAndPyramidsStandOnTiledGroundsAsOnOnePiece) {
   ASSERT_TRUE(uninstall().ok());
 }
 
-INSTANTIATE_TEST_SUITE_P(TiledGrounds, ExactBackend, ::testing::Values(Backend::Dyop, Backend::Sat),
+INSTANTIATE_TEST_SUITE_P(TiledGrounds, ExactBackendOnTiledGround,
+                         ::testing::Values(Backend::Dyop, Backend::Sat),
                          [](const ::testing::TestParamInfo<Backend>& i) {
                            return std::string(name(i.param));
                          });

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "dyop/box2d.hpp"
-#include "scenes/world.hpp"
+#include "worlds/world.hpp"
 
 namespace dyop::box2d {
 namespace {
@@ -19,7 +19,7 @@ namespace {
 constexpr float kStep = 1.0f / 60.0f;
 
 struct Outcome {
-  std::uint64_t hash = 0;  // `scenes::state_hash` of the falling bodies
+  std::uint64_t hash = 0;  // `worlds::state_hash` of the falling bodies
   Stats stats;
 };
 
@@ -65,7 +65,7 @@ Outcome run(Backend backend, const Config& config, int steps) {
       }
     }
     for (int i = 0; i < steps; ++i) world->Step(kStep, 8, 3);
-    out.hash = scenes::state_hash(bodies);
+    out.hash = worlds::state_hash(bodies);
     out.stats = stats();
     // Destroying the bodies destroys their contacts, so the plug-in can be switched afterwards.
     for (b2Body* b = world->GetBodyList(); b != nullptr;) {

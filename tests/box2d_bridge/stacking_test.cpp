@@ -4,7 +4,8 @@
 #include <iostream>
 #include <vector>
 
-#include "scene.hpp"
+#include "support/per_contact.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -116,7 +117,7 @@ const float kFreeFallSpeed = std::sqrt(2 * 10.0f * kDropHeight);
 
 // A static wall of 1 × `height` m at x in [x0, x0 + 1]: one cell, two triangle fixtures.
 void add_triangle_wall(b2Body* ground, float x0, float height) {
-  scenes::add_triangle_block(ground, x0, 0.0f, x0 + 1, height, height);
+  worlds::add_triangle_block(ground, x0, 0.0f, x0 + 1, height, height);
 }
 
 // How a pile ended: the fastest body and the farthest move over the last `kWatchSeconds`, and
@@ -139,8 +140,8 @@ PileEnd drop_concave_pile(float twist) {
   for (int i = 0; i < kConcaveBodies; ++i) {
     const b2Vec2 p(i % 2 ? 1.0f : -2.0f, kDropHeight);
     const float angle = 0.7f * i + twist;
-    bodies.push_back(i % 2 ? scenes::add_u_shape(world, p, angle)
-                           : scenes::add_l_shape(world, p, angle));
+    bodies.push_back(i % 2 ? worlds::add_u_shape(world, p, angle)
+                           : worlds::add_l_shape(world, p, angle));
     for (int k = 0; k < kDropSteps; ++k) world.step();
   }
   for (int i = 0; i < kSettleSeconds * kStepsPerSecond; ++i) world.step();

@@ -6,12 +6,19 @@
 // hysteresis met exactly, two incident edges equally anti-parallel, a point exactly at the margin
 // or an incident vertex exactly on a side plane), either choice is right and they may differ.
 // Those near-ties are detected beforehand, in double, counted, reported and excluded; only them.
+#include <box2d/box2d.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
+#include <string>
 
+#include "dyop/box2d.hpp"
 #include "dyop/sat.hpp"
-#include "scene.hpp"
-#include "workloads/random.hpp"
+#include "support/draws.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -132,7 +139,7 @@ Result<double> exact(const Placed& a, const Placed& b) {
   return sat(ta.triangle, tb.triangle);
 }
 
-b2PolygonShape random_triangle(workloads::Random& rng) {
+b2PolygonShape random_triangle(Draws& rng) {
   for (;;) {
     const float r = rng.uniformf(0.1, 1.0);
     b2Vec2 p[3];
@@ -200,7 +207,7 @@ Difference compare(const b2Manifold& ours, const b2Manifold& box2d, const b2Poly
 class ManifoldAgreement : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(ManifoldAgreement, MatchesB2CollidePolygonsOnRandomRestingAndPenetratingPairs) {
-  workloads::Random rng(20240611);
+  Draws rng(20240611);
   // Each draw a statement of its own: a call's arguments are evaluated in no fixed order.
   auto angle = [&] { return rng.uniformf(-b2_pi, b2_pi); };
   auto point = [&](double half) {

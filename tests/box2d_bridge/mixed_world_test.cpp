@@ -1,10 +1,13 @@
 // A world of circles, boxes, a pentagon, edges and triangles: the plug-in answers triangle pairs
 // and leaves every other pair exactly as Box2D's own code answers it.
+#include <gtest/gtest.h>
+
 #include <cstring>
 #include <iostream>
 #include <vector>
 
-#include "scene.hpp"
+#include "dyop/box2d.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {

@@ -1,9 +1,12 @@
 // make_triangle: a valid b2PolygonShape triangle, or an error naming the problem before Box2D
 // asserts or silently turns the hull into a 1×1 box.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 
-#include "scene.hpp"
+#include "dyop/box2d.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {

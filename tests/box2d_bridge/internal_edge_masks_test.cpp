@@ -12,8 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
-#include "scene.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {

@@ -2,7 +2,8 @@
 // time of impact stops it at the wall, and the contact it then evaluates must hold it there.
 #include <iostream>
 
-#include "scene.hpp"
+#include "support/per_contact.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {

@@ -10,14 +10,15 @@
 #include <limits>
 #include <vector>
 
+#include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_mesh.hpp"
-#include "scene.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
 
-const scenes::Material kIce{1.0f, 0.0f};
+const worlds::Material kIce{1.0f, 0.0f};
 constexpr float kTile = 0.5f;
 
 // The corners of a row of `columns` square tiles of side kTile whose tops are y = 0, from x = 0,
@@ -112,7 +113,7 @@ std::uint64_t slide_over_tiles(bool fixed) {
   if (fixed) fix_internal_edges(world.get());
   for (int i = 0; i < 180; ++i) world.step();
   EXPECT_LT(std::abs(box->GetLinearVelocity().y), 0.05f) << (fixed ? "fixed" : "found");
-  return scenes::state_hash(world);
+  return worlds::state_hash(world);
 }
 
 TEST(FixedEdgeData, LeavesTheWorldBitIdenticalToMasksFoundByContacts) {

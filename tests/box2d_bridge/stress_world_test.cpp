@@ -1,13 +1,14 @@
 // Hostile worlds under every contact: slivers as thin as `make_triangle` accepts, tiny and large
 // triangles, and the same world 10 km from the origin (where a float position resolves 1 mm).
 // No Box2D assert (they are live in the Debian build: an assert aborts the test), no NaN, no
-// explosion; and hostile points are refused by `make_triangle` before Box2D sees them.
+// explosion. (Hostile points of the stress categories: tests/testbed/stress_shapes_test.cpp.)
 #include <cmath>
+#include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "workloads/input_classes.hpp"
-#include "workloads/random.hpp"
+#include "support/draws.hpp"
+#include "support/per_contact.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -36,18 +37,6 @@ double potential_energy(World& world, float floor) {
   return e;
 }
 
-bool finite_state(World& world) {
-  for (b2Body* b = world->GetBodyList(); b != nullptr; b = b->GetNext()) {
-    const b2Vec2 p = b->GetPosition();
-    const b2Vec2 v = b->GetLinearVelocity();
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(b->GetAngle()) ||
-        !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(b->GetAngularVelocity())) {
-      return false;
-    }
-  }
-  return true;
-}
-
 // A dynamic triangle body at `at` from body-frame points (about its centroid), turned by `angle`.
 b2Body* add_dynamic_triangle(World& world, const b2Vec2& at, float angle, b2Vec2 p0, b2Vec2 p1,
                              b2Vec2 p2) {
@@ -65,7 +54,7 @@ void build(World& world, const b2Vec2& offset) {
   ground->SetTransform(offset, 0.0f);
   add_dynamic_triangle(world, offset + b2Vec2(-6.0f, 1.5f), 0.0f, b2Vec2(-8, 0), b2Vec2(8, 0),
                        b2Vec2(4, 4));
-  workloads::Random rng(7);
+  Draws rng(7);
   auto turn = [&] { return rng.uniformf(-0.6, 0.6); };
   const float thickness[] = {2e-5f, 1e-4f, 1e-3f, 1e-2f};
   for (int k = 0; k < 24; ++k) {
@@ -137,50 +126,6 @@ TEST_P(StressWorld, SliversTinyAndLargeTrianglesSettleWithoutNaNOrExplosion) {
 
 INSTANTIATE_TEST_SUITE_P(EveryContact, StressWorld, ::testing::ValuesIn(kAllContacts),
                          contact_param_name);
-
-// Hostile points, as the stress categories make them (slivers, nearly collinear, touching,
-// contained...), scaled from 1e-4 to 1e4: `make_triangle` refuses them with a message, or Box2D
-// takes them without asserting (fixture creation computes the centroid and the mass, where Box2D
-// 2.4 asserts) and steps them on a ground without a NaN.
-TEST(StressShapes, MakeTriangleRefusesWhatBox2DWouldAssertOnAndBox2DTakesTheRest) {
-  using workloads::InputClass;
-  using workloads::Precision;
-  int accepted = 0;
-  int refused = 0;
-  workloads::Random rng(3);
-  for (InputClass c : workloads::stress_classes) {
-    for (const workloads::RawPair& p : workloads::make_pairs(c, 100, 21, Precision::Float)) {
-      const double s = rng.log_uniform(-4, 4);
-      b2Vec2 v[3];
-      for (int i = 0; i < 3; ++i) {
-        v[i].Set(float(s * (p.a[i].x() - p.a[0].x())), float(s * (p.a[i].y() - p.a[0].y())));
-      }
-      const TriangleShape t = make_triangle(v[0], v[1], v[2]);
-      if (!t.ok()) {
-        ++refused;
-        EXPECT_NE(t.error, ShapeError::None);
-        EXPECT_GT(std::string(t.message).size(), 10u);
-        continue;
-      }
-      ++accepted;
-      World world;
-      add_triangle_ground(world, 2.0f);
-      b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(0.0f, 1.0f + 2.0f * float(s)));
-      b2FixtureDef def;
-      def.shape = &t.shape;
-      def.density = 1.0f;
-      body->CreateFixture(&def);
-      EXPECT_GT(body->GetMass(), 0.0f);
-      EXPECT_TRUE(std::isfinite(body->GetInertia()));
-      for (int i = 0; i < 5; ++i) world.step();
-      EXPECT_TRUE(finite_state(world)) << workloads::name(c) << " scaled by " << s;
-    }
-  }
-  EXPECT_GT(accepted, 0);
-  EXPECT_GT(refused, 0);
-  ::testing::Test::RecordProperty("accepted", accepted);
-  ::testing::Test::RecordProperty("refused", refused);
-}
 
 }  // namespace
 }  // namespace dyop::box2d::testing

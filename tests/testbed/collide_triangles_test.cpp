@@ -1,10 +1,12 @@
 // collide_triangles: Box2D's own answer (b2CollidePolygons, then b2Distance when apart) under the
 // library's conventions, as `dyop pairs --method box2d` prints it.
+#include <gtest/gtest.h>
+
 #include <iostream>
 
 #include "box2d_reference/collide_triangles.hpp"
+#include "dyop/box2d.hpp"
 #include "dyop/sat.hpp"
-#include "scene.hpp"
 #include "workloads/random.hpp"
 
 namespace dyop::box2d::testing {

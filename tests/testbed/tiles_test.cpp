@@ -50,9 +50,9 @@ TEST(Tiles, EveryGroundHasABoxAnLAndAWheel) {
   }
 }
 
-class ExactBackend : public ::testing::TestWithParam<box2d::Backend> {};
+class ExactBackendOnTiles : public ::testing::TestWithParam<box2d::Backend> {};
 
-TEST_P(ExactBackend, BoxesAndLBodiesGlideOverEveryTiledGround) {
+TEST_P(ExactBackendOnTiles, BoxesAndLBodiesGlideOverEveryTiledGround) {
   const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
   for (const char* ground : kGrounds) {
     for (const char* body : {"box", "L"}) {
@@ -69,7 +69,7 @@ TEST_P(ExactBackend, BoxesAndLBodiesGlideOverEveryTiledGround) {
 // A polygon wheel slows at each of its vertices: on every ground its travel stays within
 // kWheelTravelSpread of its travel on one body, and it is thrown up no faster than its own rolling
 // does.
-TEST_P(ExactBackend, WheelRollsOverEveryTiledGroundAsOverOneBody) {
+TEST_P(ExactBackendOnTiles, WheelRollsOverEveryTiledGroundAsOverOneBody) {
   const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
   const SliderFigures& one_body = slider(m, "wheel", "one-body");
   for (const char* ground : kGrounds) {
@@ -80,7 +80,7 @@ TEST_P(ExactBackend, WheelRollsOverEveryTiledGroundAsOverOneBody) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Tiles, ExactBackend,
+INSTANTIATE_TEST_SUITE_P(Tiles, ExactBackendOnTiles,
                          ::testing::Values(box2d::Backend::Dyop, box2d::Backend::Sat),
                          [](const ::testing::TestParamInfo<box2d::Backend>& i) {
                            return std::string(box2d::name(i.param));

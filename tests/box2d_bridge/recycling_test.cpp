@@ -1,89 +1,26 @@
-// Manifold recycling (`Config::recycle_distance`): keeping a contact's manifold while its pair
-// barely moved must not change what the world does beyond the header's bound: structures stand,
-// fast bodies are stopped, a change of masks or install recomputes, the kept manifolds stay within
-// the bound of a fresh answer, and the measurement floor keeps everything.
+// Manifold recycling (`Config::recycle_distance`) in worlds built by hand: a resting pair keeps its
+// manifolds, fast bodies are stopped, a change of masks or install recomputes, bodies made and
+// destroyed far away change nothing, and the measurement floor keeps everything. (In the scenes:
+// structures stand, kept manifolds stay within the bound of a fresh answer, off is bit-identical:
+// tests/testbed/recycling_scenes_test.cpp.)
+#include <gtest/gtest.h>
+
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_measurement.hpp"
-#include "scene.hpp"
-#include "scenes/scene.hpp"
+#include "dyop/box2d.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
-
-constexpr std::uint64_t kSeed = 7;
 
 Config recycling(float distance) {
   Config c = Config::all();
   c.recycle_distance = distance;
   return c;
-}
-
-// A structure "stands as without recycling" when its top drifts no more than 1 cm beyond what it
-// drifts with recycling off (the drift itself is settling: centimetres; a fall is metres).
-constexpr double kExtraDrift = 0.01;
-
-TEST(Recycling, PyramidAndStackStandAsWithoutIt) {
-  for (const char* scene : {"pyramid", "stack"}) {
-    const scenes::SceneMetrics off =
-        scenes::run_scene(scene, Backend::Dyop, 600, kSeed, recycling(0));
-    ASSERT_TRUE(off.top_displacement.has_value());
-    for (const float d : {0.005f, 0.02f, 0.05f}) {
-      const scenes::SceneMetrics on =
-          scenes::run_scene(scene, Backend::Dyop, 600, kSeed, recycling(d));
-      ASSERT_TRUE(on.top_displacement.has_value());
-      EXPECT_FALSE(on.nan_detected);
-      EXPECT_GT(on.recycled.value_or(0), 0u) << scene << " at " << d << " m kept nothing";
-      EXPECT_LE(*on.top_displacement, *off.top_displacement + kExtraDrift)
-          << scene << " at " << d << " m";
-    }
-  }
-}
-
-// The header's promise: a kept manifold's deepest separation is within about the distance of
-// the fresh answer's. Bound checked: twice the distance plus the face hysteresis (the kept face
-// and the fresh best face each moved by less than the distance, and the fresh choice may prefer
-// A's face within the hysteresis).
-TEST(Recycling, KeptManifoldsStayWithinTheBoundOfAFreshAnswer) {
-  for (const float d : {0.005f, 0.02f}) {
-    const std::unique_ptr<scenes::Scene> rain =
-        scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(d));
-    rain->check_manifolds();
-    for (int i = 0; i < 300; ++i) rain->step();
-    const scenes::SceneMetrics m = rain->metrics();
-    ASSERT_TRUE(m.manifold_errors.has_value());
-    EXPECT_GT(m.recycled.value_or(0), 0u);
-    EXPECT_GT(m.manifold_errors->touching, 1000u);
-    EXPECT_LE(m.manifold_errors->kept_max, 2 * d + face_hysteresis) << d << " m";
-  }
-}
-
-// Final states after 90 steps from seed 0 under `dyop` before recycling existed (the plug-in of
-// the previous landing, internal-edge rule on): with it off, the same worlds bit for bit.
-TEST(Recycling, OffIsBitIdenticalToThePlugInWithoutIt) {
-  const std::pair<const char*, std::uint64_t> before[] = {{"pyramid", 0xd0caac472032c782ull},
-                                                          {"rain", 0x99ffaa4489b68e04ull},
-                                                          {"slide", 0xd871df834adf0b45ull}};
-  for (const auto& [scene, hash] : before) {
-    EXPECT_EQ(scenes::run_scene(scene, Backend::Dyop, 90, 0, recycling(0)).hash, hash) << scene;
-    EXPECT_NE(scenes::run_scene(scene, Backend::Dyop, 90, 0, recycling(0.005f)).hash, hash)
-        << scene << ": recycling on keeps manifolds, so the world differs in its last bits";
-  }
-}
-
-TEST(Recycling, OffKeepsNothingAndTheFreshAnswerIsTheWorldsOwn) {
-  const std::unique_ptr<scenes::Scene> rain =
-      scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(0));
-  rain->check_manifolds();
-  for (int i = 0; i < 200; ++i) rain->step();
-  const scenes::SceneMetrics m = rain->metrics();
-  EXPECT_EQ(m.recycled.value_or(1), 0u);
-  ASSERT_TRUE(m.manifold_errors.has_value());
-  EXPECT_EQ(m.manifold_errors->kept_max, 0.0);
-  EXPECT_EQ(m.manifold_errors->stale, 0u);
 }
 
 // 100 m/s at a 6 cm wall (see bullet_test.cpp): every step moves the body metres, far beyond any
@@ -121,7 +58,7 @@ struct RestingBox {
   explicit RestingBox(b2BodyType ground_type = b2_staticBody) {
     ground = add_body(world, ground_type, b2Vec2(0.0f, 0.0f));
     add_triangle(ground, b2Vec2(-4.0f, 0.0f), b2Vec2(4.0f, 0.0f), b2Vec2(-4.0f, -1.0f));
-    box = scenes::add_split_box(world, b2Vec2(0.0f, 0.5f + b2_polygonRadius), 0.5f);
+    box = add_split_box(world, b2Vec2(0.0f, 0.5f + b2_polygonRadius), 0.5f);
     box->SetSleepingAllowed(false);
     for (int i = 0; i < 2 * kStepsPerSecond; ++i) world.step();
   }
@@ -187,27 +124,6 @@ TEST(Recycling, BodiesMadeAndDestroyedFarAwayLeaveKeptManifoldsKept) {
     EXPECT_EQ(r.kept_in_one_step(), 2u) << "step " << i;
   }
   uninstall();
-}
-
-// A world with a body made and destroyed 1.4 km away at alternate steps (`Scene::spawn_far_away`)
-// keeps as many of its manifolds as without it: nothing near a pair changed. (Not bit for bit:
-// the broad phase's tree, and so the order Box2D makes contacts in, changes with the body, under
-// Box2D's own contact too.) Before, every contact recomputed at every step and none was kept.
-TEST(Recycling, ASpawnerFarAwayKeepsAsManyManifoldsAsWithoutIt) {
-  for (const char* name : {"pyramid", "rain", "tiles"}) {
-    double kept_share[2];
-    for (const bool spawning : {false, true}) {
-      const std::unique_ptr<scenes::Scene> scene =
-          scenes::make_scene(name, Backend::Dyop, kSeed, recycling(0.005f));
-      if (spawning) scene->spawn_far_away();
-      for (int i = 0; i < 120; ++i) scene->step();
-      const scenes::SceneMetrics m = scene->metrics();
-      kept_share[spawning] =
-          double(m.recycled.value_or(0)) / double(m.plugin_evaluations.value_or(1));
-    }
-    EXPECT_GT(kept_share[0], 0.0) << name;
-    EXPECT_GT(kept_share[1], 0.9 * kept_share[0]) << name;
-  }
 }
 
 // The contacts of `world` that report masks (`contact_internal_edges`), each checked to hold those

@@ -1,5 +1,5 @@
 // Many worlds: a world's answer depends on nothing but that world. Final-state hashes pinned per
-// scene and runner (in the style of Box2D v3's determinism test), the same worlds on 1 to 8
+// world and contact (in the style of Box2D v3's determinism test), the same worlds on 1 to 8
 // threads at once and in a pool of workers, episodes of a reset loop (each world deleted without
 // destroying its bodies, the next built at the addresses it freed) against the same episode run
 // alone, resident memory over 10,000 episodes, and the counters summed over threads. Run under
@@ -7,101 +7,163 @@
 //
 // The pinned hashes are for x86-64 with glibc (Box2D 2.4.1 from Debian turns bodies with
 // sinf/cosf): on another platform, or after a change that is meant to change the worlds, print
-// new ones with `DYOP_PRINT_HASHES=1 build/bin/many_worlds_test --gtest_filter='*Pinned*'`.
+// new ones with
+// `DYOP_PRINT_HASHES=1 build/bin/box2d_bridge_tests --gtest_filter='ManyWorlds.*Pinned*'`.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <thread>
 #include <unistd.h>
 #include <vector>
 
 #include "dyop/box2d.hpp"
-#include "scenes/scene.hpp"
-#include "scenes/scene_world.hpp"
-#include "scenes/world.hpp"
+#include "support/per_contact.hpp"
+#include "support/worlds.hpp"
 
-namespace dyop::box2d {
+namespace dyop::box2d::testing {
 namespace {
 
-using scenes::Runner;
-
-// 1.5 s of each scene: the pyramid settles, the rain lands, the slide's bodies cross junctions.
+// 1.5 s of each world: the tower settles, the crowd lands, the sliders cross cell junctions.
 constexpr int kSteps = 90;
-constexpr std::uint64_t kSeed = 0;
 
-// Scenes whose worlds differ in kind: a resting structure, concave bodies of many triangles, a
-// crowd landing in a triangulated bin, sliders over internal edges.
-constexpr std::array<const char*, 4> kScenes = {"pyramid", "stack-concave", "rain", "slide"};
+// Worlds that differ in kind: a resting structure, concave bodies of many triangles, a crowd
+// landing in a triangulated bin, sliders over internal edges.
+enum class Kind { Tower, Concave, Crowd, Sliders };
+constexpr std::array<Kind, 4> kKinds = {Kind::Tower, Kind::Concave, Kind::Crowd, Kind::Sliders};
 
-// Box2D's own contact (nothing installed), then every backend in registry order.
-std::vector<Runner> all_runners() {
-  std::vector<Runner> runners = {std::nullopt};
-  for (const Backend b : all_backends) runners.emplace_back(b);
-  return runners;
+const char* kind_name(Kind kind) {
+  switch (kind) {
+    case Kind::Tower:
+      return "tower";
+    case Kind::Concave:
+      return "concave";
+    case Kind::Crowd:
+      return "crowd";
+    case Kind::Sliders:
+      return "sliders";
+  }
+  return "?";
+}
+
+std::unique_ptr<World> build_world(Kind kind) {
+  auto world = std::make_unique<World>();
+  switch (kind) {
+    case Kind::Tower: {  // 4 columns of 8 split boxes of 1 m on a triangle ground
+      add_triangle_ground(*world, 6.0f);
+      const float pitch = 1.0f + b2_polygonRadius;
+      for (int column = 0; column < 4; ++column) {
+        for (int level = 0; level < 8; ++level) {
+          add_split_box(
+              *world, b2Vec2(-3.3f + 2.2f * column, 0.5f + b2_polygonRadius + pitch * level), 0.5f);
+        }
+      }
+      break;
+    }
+    case Kind::Concave:  // 12 L, U and star bodies (4 to 10 triangles) dropped into a bin
+      worlds::add_triangle_bin(*world, 6.0f, 10.0f);
+      for (int i = 0; i < 12; ++i) {
+        const b2Vec2 at(-4.5f + 3.0f * static_cast<float>(i % 4), 2.0f + 3.0f * (i / 4));
+        const float angle = 0.7f * static_cast<float>(i);
+        if (i % 3 == 0) worlds::add_l_shape(*world, at, angle);
+        if (i % 3 == 1) worlds::add_u_shape(*world, at, angle);
+        if (i % 3 == 2) worlds::add_star(*world, at, angle);
+      }
+      break;
+    case Kind::Crowd:  // 120 single triangles of three sizes falling into a bin
+      worlds::add_triangle_bin(*world, 5.0f, 8.0f);
+      for (int i = 0; i < 120; ++i) {
+        const float size = 0.2f + 0.15f * static_cast<float>(i % 3);
+        b2Body* body =
+            add_body(*world, b2_dynamicBody,
+                     b2Vec2(-4.5f + 0.9f * static_cast<float>(i % 11), 1.5f + 0.9f * (i / 11)),
+                     0.37f * static_cast<float>(i));
+        add_triangle(body, b2Vec2(-size, -size), b2Vec2(size, -size), b2Vec2(0.0f, size));
+      }
+      break;
+    case Kind::Sliders: {  // boxes and L bodies launched along a ground of 0.5 m triangle cells
+      b2Body* ground = add_body(*world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+      worlds::add_triangle_block(ground, -10.0f, -1.0f, 30.0f, 0.0f, 0.5f);
+      for (int k = 0; k < 6; ++k) {
+        const b2Vec2 at(-8.0f + 2.5f * static_cast<float>(k), 0.6f + b2_polygonRadius);
+        b2Body* body = k % 2 == 0 ? add_split_box(*world, at, 0.5f)
+                                  : worlds::add_l_shape(*world, at - b2Vec2(0.0f, 0.5f), 0.0f);
+        body->SetLinearVelocity(b2Vec2(3.0f + static_cast<float>(k), 0.0f));
+      }
+      break;
+    }
+  }
+  return world;
+}
+
+// Builds `kind`'s world, steps it kSteps times and returns its final state hash.
+std::uint64_t run_world(Kind kind) {
+  const std::unique_ptr<World> world = build_world(kind);
+  for (int s = 0; s < kSteps; ++s) world->step();
+  return worlds::state_hash(*world);
 }
 
 struct Pinned {
-  const char* scene;
-  const char* runner;
+  const char* world;
+  const char* contact;
   std::uint64_t hash;
 };
 
-// Final state after kSteps from kSeed, with the plug-in installed with the default Config
-// (recycling on: `Config::recycle_distance`; `box2d` equals Box2D's own, `sat` equals `dyop`:
-// both pairs are bit-identical by design).
+// Final state after kSteps, with the plug-in installed with the default Config (recycling on:
+// `Config::recycle_distance`; `box2d` equals Box2D's own, `sat` equals `dyop`: both pairs are
+// bit-identical by design).
 constexpr Pinned kPinned[] = {
-    {"pyramid", "box2d-own", 0x34e1c5357f7bf0a3ull},
-    {"stack-concave", "box2d-own", 0x8e0497e295cce22bull},
-    {"rain", "box2d-own", 0xdc370bde4e27e896ull},
-    {"slide", "box2d-own", 0x689616c76edd9520ull},
-    {"pyramid", "dyop", 0x3245848e0ce34c79ull},
-    {"stack-concave", "dyop", 0x7bf5752a4027f260ull},
-    {"rain", "dyop", 0xf743365352488b64ull},
-    {"slide", "dyop", 0xaec100bac04c5a22ull},
-    {"pyramid", "dyop-fast", 0x2c15c4fe8423d128ull},
-    {"stack-concave", "dyop-fast", 0x0825367dab77ebb5ull},
-    {"rain", "dyop-fast", 0x63a996cd6c8c6551ull},
-    {"slide", "dyop-fast", 0x87e0a517c358b254ull},
-    {"pyramid", "lin-canny", 0x6f630c27d4d572efull},
-    {"stack-concave", "lin-canny", 0xc1f16aa41b0ea187ull},
-    {"rain", "lin-canny", 0x0e92c9cbd96bd5c7ull},
-    {"slide", "lin-canny", 0x612c449bd2429892ull},
-    {"pyramid", "sat", 0x3245848e0ce34c79ull},
-    {"stack-concave", "sat", 0x7bf5752a4027f260ull},
-    {"rain", "sat", 0xf743365352488b64ull},
-    {"slide", "sat", 0xaec100bac04c5a22ull},
-    {"pyramid", "epa", 0xb9808758ef5030b8ull},
-    {"stack-concave", "epa", 0x9009435c217ffd13ull},
-    {"rain", "epa", 0x26677e751a2a4a58ull},
-    {"slide", "epa", 0xff97f6e5bacdd500ull},
-    {"pyramid", "box2d", 0x34e1c5357f7bf0a3ull},
-    {"stack-concave", "box2d", 0x8e0497e295cce22bull},
-    {"rain", "box2d", 0xdc370bde4e27e896ull},
-    {"slide", "box2d", 0x689616c76edd9520ull},
+    {"tower", "box2d_own", 0x116509f75a54d450ull},
+    {"concave", "box2d_own", 0x376ffe6557c4182full},
+    {"crowd", "box2d_own", 0x911c6e8d2744e1d9ull},
+    {"sliders", "box2d_own", 0xa2bf4c96b3d39b70ull},
+    {"tower", "via_plugin_dyop", 0xb77c20e792fcc14dull},
+    {"concave", "via_plugin_dyop", 0x8d25f43f4c6ef2cbull},
+    {"crowd", "via_plugin_dyop", 0x75c527b0a3ee9109ull},
+    {"sliders", "via_plugin_dyop", 0xcbc880e137ae6ccbull},
+    {"tower", "via_plugin_dyop_fast", 0x0bacff12591f3457ull},
+    {"concave", "via_plugin_dyop_fast", 0x5bef761421c82d9eull},
+    {"crowd", "via_plugin_dyop_fast", 0x73bc7debfada6a43ull},
+    {"sliders", "via_plugin_dyop_fast", 0x0c575594080cd99full},
+    {"tower", "via_plugin_lin_canny", 0xf3c8adc5b315d092ull},
+    {"concave", "via_plugin_lin_canny", 0x13896d152f1755b2ull},
+    {"crowd", "via_plugin_lin_canny", 0xe0114387a41de5b6ull},
+    {"sliders", "via_plugin_lin_canny", 0xc34b732e4b52ebb5ull},
+    {"tower", "via_plugin_sat", 0xb77c20e792fcc14dull},
+    {"concave", "via_plugin_sat", 0x8d25f43f4c6ef2cbull},
+    {"crowd", "via_plugin_sat", 0x75c527b0a3ee9109ull},
+    {"sliders", "via_plugin_sat", 0xcbc880e137ae6ccbull},
+    {"tower", "via_plugin_epa", 0x1af6acda68c9cbddull},
+    {"concave", "via_plugin_epa", 0x99ed38b3ee0bbb6eull},
+    {"crowd", "via_plugin_epa", 0xbd5987e901a44340ull},
+    {"sliders", "via_plugin_epa", 0x31809af75802ba85ull},
+    {"tower", "via_plugin_box2d", 0x116509f75a54d450ull},
+    {"concave", "via_plugin_box2d", 0x376ffe6557c4182full},
+    {"crowd", "via_plugin_box2d", 0x911c6e8d2744e1d9ull},
+    {"sliders", "via_plugin_box2d", 0xa2bf4c96b3d39b70ull},
 };
 
-std::uint64_t pinned(const char* scene, const Runner& runner) {
+std::uint64_t pinned(Kind kind, const Contact& contact) {
   for (const Pinned& p : kPinned) {
-    if (std::string(p.scene) == scene && std::string(p.runner) == scenes::name(runner)) {
+    if (std::string(p.world) == kind_name(kind) && p.contact == contact_name(contact)) {
       return p.hash;
     }
   }
-  ADD_FAILURE() << "no pinned hash for " << scene << " under " << scenes::name(runner);
+  ADD_FAILURE() << "no pinned hash for " << kind_name(kind) << " under " << contact_name(contact);
   return 0;
 }
 
-// Installs `runner` for the lifetime of the object (or leaves Box2D's own contact), before any
+// Installs `contact` for the lifetime of the object (or leaves Box2D's own contact), before any
 // thread starts and after every thread joined: the one rule of the plug-in's threading.
 class Installed {
  public:
-  explicit Installed(const Runner& runner) {
-    EXPECT_TRUE((runner ? install(*runner) : uninstall()).ok());
+  explicit Installed(const Contact& contact) {
+    EXPECT_TRUE((contact ? install(*contact) : uninstall()).ok());
   }
   ~Installed() { uninstall(); }
   Installed(const Installed&) = delete;
@@ -116,38 +178,39 @@ std::string hex(std::uint64_t h) {
 
 TEST(ManyWorlds, EachSceneAloneEndsAtItsPinnedHash) {
   const bool print = std::getenv("DYOP_PRINT_HASHES") != nullptr;
-  for (const Runner& runner : all_runners()) {
-    const Installed installed(runner);
-    for (const char* scene : kScenes) {
-      const std::uint64_t h = scenes::run_scene_world(scene, kSeed, kSteps);
+  for (const Contact& contact : kAllContacts) {
+    const Installed installed(contact);
+    for (const Kind kind : kKinds) {
+      const std::uint64_t h = run_world(kind);
       if (print) {
-        std::printf("    {\"%s\", \"%s\", %sull},\n", scene, scenes::name(runner), hex(h).c_str());
+        std::printf("    {\"%s\", \"%s\", %sull},\n", kind_name(kind),
+                    contact_name(contact).c_str(), hex(h).c_str());
       } else {
-        EXPECT_EQ(hex(h), hex(pinned(scene, runner))) << scene << " under " << scenes::name(runner);
+        EXPECT_EQ(hex(h), hex(pinned(kind, contact)))
+            << kind_name(kind) << " under " << contact_name(contact);
       }
     }
   }
 }
 
-// The scene a thread or a world of a pool runs: every scene of kScenes, round robin.
-const char* scene_of(int i) { return kScenes[static_cast<std::size_t>(i) % kScenes.size()]; }
+// The world a thread or a member of a pool runs: every kind of kKinds, round robin.
+Kind kind_of(int i) { return kKinds[static_cast<std::size_t>(i) % kKinds.size()]; }
 
 TEST(ManyWorlds, WorldsOnOneToEightThreadsEndAtThePinnedHashes) {
-  for (const Runner& runner : all_runners()) {
-    const Installed installed(runner);
+  for (const Contact& contact : kAllContacts) {
+    const Installed installed(contact);
     for (const int n : {1, 2, 4, 8}) {
       std::vector<std::uint64_t> hashes(static_cast<std::size_t>(n));
       std::vector<std::thread> threads;
       for (int i = 0; i < n; ++i) {
-        threads.emplace_back([i, &hashes] {
-          hashes[static_cast<std::size_t>(i)] = scenes::run_scene_world(scene_of(i), kSeed, kSteps);
-        });
+        threads.emplace_back(
+            [i, &hashes] { hashes[static_cast<std::size_t>(i)] = run_world(kind_of(i)); });
       }
       for (std::thread& t : threads) t.join();
       for (int i = 0; i < n; ++i) {
-        EXPECT_EQ(hex(hashes[static_cast<std::size_t>(i)]), hex(pinned(scene_of(i), runner)))
-            << n << " threads, world " << i << " (" << scene_of(i) << ") under "
-            << scenes::name(runner);
+        EXPECT_EQ(hex(hashes[static_cast<std::size_t>(i)]), hex(pinned(kind_of(i), contact)))
+            << n << " threads, world " << i << " (" << kind_name(kind_of(i)) << ") under "
+            << contact_name(contact);
       }
     }
   }
@@ -160,10 +223,8 @@ TEST(ManyWorlds, WorldsSteppedByWhicheverWorkerIsFreeEndAtThePinnedHashes) {
   constexpr int kWorkers = 3;
   for (const Backend backend : {Backend::Dyop, Backend::Sat}) {
     const Installed installed(backend);
-    std::vector<std::unique_ptr<scenes::SceneWorld>> worlds;
-    for (int i = 0; i < kWorlds; ++i) {
-      worlds.push_back(std::make_unique<scenes::SceneWorld>(scene_of(i), kSeed));
-    }
+    std::vector<std::unique_ptr<World>> pool;
+    for (int i = 0; i < kWorlds; ++i) pool.push_back(build_world(kind_of(i)));
     std::mutex queue_lock;
     std::vector<int> queue;  // worlds waiting for their next step, one entry per step left
     for (int s = 0; s < kSteps; ++s) {
@@ -189,7 +250,7 @@ TEST(ManyWorlds, WorldsSteppedByWhicheverWorkerIsFreeEndAtThePinnedHashes) {
           std::this_thread::yield();
           continue;
         }
-        worlds[static_cast<std::size_t>(world)]->step();
+        pool[static_cast<std::size_t>(world)]->step();
         const std::lock_guard<std::mutex> hold(queue_lock);
         busy[static_cast<std::size_t>(world)] = false;
       }
@@ -198,8 +259,9 @@ TEST(ManyWorlds, WorldsSteppedByWhicheverWorkerIsFreeEndAtThePinnedHashes) {
     for (int w = 0; w < kWorkers; ++w) workers.emplace_back(work);
     for (std::thread& t : workers) t.join();
     for (int i = 0; i < kWorlds; ++i) {
-      EXPECT_EQ(hex(worlds[static_cast<std::size_t>(i)]->hash()), hex(pinned(scene_of(i), backend)))
-          << "world " << i << " (" << scene_of(i) << ") under " << name(backend);
+      EXPECT_EQ(hex(worlds::state_hash(*pool[static_cast<std::size_t>(i)])),
+                hex(pinned(kind_of(i), backend)))
+          << "world " << i << " (" << kind_name(kind_of(i)) << ") under " << name(backend);
     }
   }
 }
@@ -233,11 +295,11 @@ b2World* build_episode(int terrain, std::vector<b2Body*>& bodies) {
     const float xb = xa + 1.0f;
     const float ya = corner_height(terrain, i);
     const float yb = corner_height(terrain, i + 1);
-    scenes::add_triangle(ground, {xa, -1.0f}, {xb, -1.0f}, {xb, yb});
-    scenes::add_triangle(ground, {xa, -1.0f}, {xb, yb}, {xa, ya});
+    add_triangle(ground, {xa, -1.0f}, {xb, -1.0f}, {xb, yb});
+    add_triangle(ground, {xa, -1.0f}, {xb, yb}, {xa, ya});
   }
   const float end = -x0;
-  scenes::add_triangle(ground, {end, -1.0f}, {end + 1.0f, -1.0f}, {end, 2.0f});  // the end cap
+  add_triangle(ground, {end, -1.0f}, {end + 1.0f, -1.0f}, {end, 2.0f});  // the end cap
   for (int k = 0; k < kEpisodeBoxes; ++k) {
     b2BodyDef def;
     def.type = b2_dynamicBody;
@@ -245,8 +307,8 @@ b2World* build_episode(int terrain, std::vector<b2Body*>& bodies) {
                      2.0f + static_cast<float>(k / 10) * 1.2f);
     def.angle = 0.1f * static_cast<float>(k % 5);
     b2Body* box = world->CreateBody(&def);
-    scenes::add_triangle(box, {-0.4f, -0.4f}, {0.4f, -0.4f}, {0.4f, 0.4f});
-    scenes::add_triangle(box, {-0.4f, -0.4f}, {0.4f, 0.4f}, {-0.4f, 0.4f});
+    add_triangle(box, {-0.4f, -0.4f}, {0.4f, -0.4f}, {0.4f, 0.4f});
+    add_triangle(box, {-0.4f, -0.4f}, {0.4f, 0.4f}, {-0.4f, 0.4f});
     bodies.push_back(box);
   }
   return world;
@@ -257,8 +319,8 @@ b2World* build_episode(int terrain, std::vector<b2Body*>& bodies) {
 std::uint64_t run_episode(int terrain) {
   std::vector<b2Body*> bodies;
   b2World* world = build_episode(terrain, bodies);
-  for (int s = 0; s < kEpisodeSteps; ++s) world->Step(scenes::time_step, 8, 3);
-  const std::uint64_t h = scenes::state_hash(bodies);
+  for (int s = 0; s < kEpisodeSteps; ++s) world->Step(worlds::time_step, 8, 3);
+  const std::uint64_t h = worlds::state_hash(bodies);
   delete world;
   return h;
 }
@@ -322,18 +384,18 @@ void small_episode(int e) {
   b2Body* ground = world->CreateBody(&ground_def);
   for (int i = 0; i < 4; ++i) {
     const float x = static_cast<float>(i) - 2.0f;
-    scenes::add_triangle(ground, {x, -1.0f}, {x + 1.0f, -1.0f}, {x + 1.0f, 0.0f});
-    scenes::add_triangle(ground, {x, -1.0f}, {x + 1.0f, 0.0f}, {x, 0.0f});
+    add_triangle(ground, {x, -1.0f}, {x + 1.0f, -1.0f}, {x + 1.0f, 0.0f});
+    add_triangle(ground, {x, -1.0f}, {x + 1.0f, 0.0f}, {x, 0.0f});
   }
   for (int k = 0; k < 4; ++k) {
     b2BodyDef def;
     def.type = b2_dynamicBody;
     def.position.Set(-1.5f + static_cast<float>(k), 0.45f + 0.01f * static_cast<float>(e % 7));
     b2Body* box = world->CreateBody(&def);
-    scenes::add_triangle(box, {-0.4f, -0.4f}, {0.4f, -0.4f}, {0.4f, 0.4f});
-    scenes::add_triangle(box, {-0.4f, -0.4f}, {0.4f, 0.4f}, {-0.4f, 0.4f});
+    add_triangle(box, {-0.4f, -0.4f}, {0.4f, -0.4f}, {0.4f, 0.4f});
+    add_triangle(box, {-0.4f, -0.4f}, {0.4f, 0.4f}, {-0.4f, 0.4f});
   }
-  for (int s = 0; s < 10; ++s) world->Step(scenes::time_step, 8, 3);
+  for (int s = 0; s < 10; ++s) world->Step(worlds::time_step, 8, 3);
   delete world;
 }
 
@@ -368,13 +430,13 @@ TEST(ManyWorlds, StatsSumTheCountsOfEveryThread) {
   std::vector<Stats> alone;
   for (int i = 0; i < 4; ++i) {
     reset_stats();
-    scenes::run_scene_world(scene_of(i), kSeed, kSteps);
+    run_world(kind_of(i));
     alone.push_back(stats());
   }
   reset_stats();
   std::vector<std::thread> threads;
   for (int i = 0; i < 4; ++i) {
-    threads.emplace_back([i] { scenes::run_scene_world(scene_of(i), kSeed, kSteps); });
+    threads.emplace_back([i] { run_world(kind_of(i)); });
   }
   for (std::thread& t : threads) t.join();  // the threads have ended: their counts stay
   const Stats together = stats();
@@ -391,4 +453,4 @@ TEST(ManyWorlds, StatsSumTheCountsOfEveryThread) {
 }
 
 }  // namespace
-}  // namespace dyop::box2d
+}  // namespace dyop::box2d::testing

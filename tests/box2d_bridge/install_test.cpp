@@ -2,10 +2,13 @@
 // any moment of a program: before the first step, mid-simulation, with two worlds alive, after a
 // world was deleted without destroying its bodies. The sanitizer build (scripts/sanitize.sh) runs
 // these too: a contact freed with the wrong function or size is reported there.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <memory>
 
-#include "scene.hpp"
+#include "dyop/box2d.hpp"
+#include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
@@ -42,7 +45,7 @@ std::uint64_t pile_after(Change change) {
     change(i);
     world.step();
   }
-  return scenes::state_hash(world);
+  return worlds::state_hash(world);
 }
 
 // Each test leaves the registry as it found it: Box2D's own contact.
