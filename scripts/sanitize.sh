@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (GCC), in build-asan/:
-# configure, build, then ctest. Any sanitizer report aborts the test that made it, and the run
-# fails. Box2D comes from Debian uninstrumented: ASan still checks every access our code makes.
-#   SANITIZE_EXCLUDE  ctest -E regular expression of tests left out (default: the resident-memory
-#                     test of many_worlds_test, as ASan's quarantine holds freed memory on purpose)
+# configure, build the test programs only (and the `dyop` program, which the command-line tests
+# run; not the benchmarks or the examples), then ctest. Any sanitizer report aborts the test that
+# made it, and the run fails. Box2D comes from Debian uninstrumented: ASan still checks every
+# access our code makes.
+#   SANITIZE_EXCLUDE  ctest -E regular expression of tests left out (default: the many-worlds
+#                     resident-memory test, as ASan's quarantine holds freed memory on purpose)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -12,7 +14,7 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS="$sanitizers -fno-omit-frame-pointer" \
       -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" -DCMAKE_SHARED_LINKER_FLAGS="$sanitizers" \
       -DDYOP_BUILD_BENCH=OFF >/dev/null
-cmake --build build-asan -j"$(nproc)"
+cmake --build build-asan -j"$(nproc)" --target dyop_tests box2d_bridge_tests testbed_tests
 echo "sanitize: built in $((SECONDS - start)) s" >&2
 
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1
