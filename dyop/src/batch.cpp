@@ -4,8 +4,8 @@
 // at A's first vertex, and for pairs found apart the exact distance. This file checks the CPU
 // once and sends whole blocks to the AVX-512 lanes (batch_avx512.cpp), the AVX2 + FMA lanes
 // (batch_avx2.cpp) or the portable lanes (one pair per step), as `BatchKernel` asks. Invariant:
-// every kernel gives every pair the same bits (tests/batch_kernels_test.cpp), and to rounding
-// `sat`'s figures (tests/batch_test.cpp).
+// every kernel gives every pair the same bits (tests/dyop/batch_kernels_test.cpp), and to rounding
+// `sat`'s figures (tests/dyop/batch_test.cpp).
 #include "dyop/batch.hpp"
 
 #include <algorithm>

@@ -14,7 +14,7 @@
 // `dyop_fast`, the heuristic alone: the pivot's vertex of one triangle against the pivot's edge
 // line of the other (normal form n·x = c, unit n), both ways; penetrating when a pivot vertex is
 // strictly inside the other triangle (orientation signs, not area sums). No certification: it can
-// miss a penetration or overstate its depth (measured in tests/method_accuracy_test.cpp).
+// miss a penetration or overstate its depth (measured in tests/dyop/method_accuracy_test.cpp).
 
 #include "dyop/dyop.hpp"
 

@@ -134,8 +134,8 @@ class MixedWorld : public ::testing::TestWithParam<Backend> {
  protected:
   // The checker recomputes triangle pairs with `collide_polygons`, which does not know the
   // bodies' internal edges (the split boxes' diagonals): the rule is off here, and tested in
-  // internal_edges_test. It computes every manifold afresh: recycling is off here too, and
-  // tested in recycling_test.
+  // internal_edges_in_worlds_test. It computes every manifold afresh: recycling is off here too,
+  // and tested in recycling_test.
   void SetUp() override {
     Config config;
     config.internal_edges = false;

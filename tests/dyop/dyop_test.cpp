@@ -213,11 +213,11 @@ TEST(InternalEdgesRule, APairApartBeyondTheMarginIsAnsweredAsWithoutMasks) {
   EXPECT_GT(apart, 500) << "the classes hold pairs apart beyond the margin";
 }
 
-// Two slivers end to end, 24 apart (found by fuzz_sat, see degenerate_test.cpp): in float every
-// edge normal's gap lies in the touching band (the widest, 0.094, against 0.14), so the distance
-// decides that they are apart. With `Apart::Gap` the answer is still the gap along its axis, as
-// for any pair apart, so that `separation > margin` means the masks are not read (checked under
-// every edge mask); with `Apart::Distance`, the distance.
+// Two slivers end to end, 24 apart (found by fuzz_sat, see tests/testbed/degenerate_test.cpp): in
+// float every edge normal's gap lies in the touching band (the widest, 0.094, against 0.14), so the
+// distance decides that they are apart. With `Apart::Gap` the answer is still the gap along its
+// axis, as for any pair apart, so that `separation > margin` means the masks are not read (checked
+// under every edge mask); with `Apart::Distance`, the distance.
 TEST(InternalEdgesRule, APairApartByItsDistanceInTheTouchingBandIsAnsweredWithItsGap) {
   using V = Vec2<double>;
   const RawPair p{{V(0, 0), V(0, 4), V(4, -1020)}, {V(-4, 36908), V(4, 1032), V(0, 28)}};

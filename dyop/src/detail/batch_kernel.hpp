@@ -8,7 +8,7 @@
 // "does any need more".
 //
 // Every lanes type performs the same IEEE operations in the same order on each pair, so all
-// kernels give the same bits (tests/batch_kernels_test.cpp): every translation unit that includes
+// kernels give the same bits (tests/dyop/batch_kernels_test.cpp): every translation unit that includes
 // this header is compiled with -ffp-contract=off, fusing happens only where `fma` is called, and
 // the reciprocal square root is one shared refinement (`refine_inv_sqrt`) of the same hardware
 // estimate (the SSE `rsqrtps` family, the same table for one lane or sixteen on a given CPU).
