@@ -8,10 +8,11 @@
 // "does any need more".
 //
 // Every lanes type performs the same IEEE operations in the same order on each pair, so all
-// kernels give the same bits (tests/dyop/batch_kernels_test.cpp): every translation unit that includes
-// this header is compiled with -ffp-contract=off, fusing happens only where `fma` is called, and
-// the reciprocal square root is one shared refinement (`refine_inv_sqrt`) of the same hardware
-// estimate (the SSE `rsqrtps` family, the same table for one lane or sixteen on a given CPU).
+// kernels give the same bits (tests/dyop/batch_kernels_test.cpp): every translation unit that
+// includes this header is compiled with -ffp-contract=off, fusing happens only where `fma` is
+// called, and the reciprocal square root is one shared refinement (`refine_inv_sqrt`) of the same
+// hardware estimate (the SSE `rsqrtps` family, the same table for one lane or sixteen on a given
+// CPU).
 //
 // This header includes no library header (no Eigen, no iostream) and calls no function of the
 // standard library: the AVX2 and AVX-512 translation units include it and are compiled for those
