@@ -104,8 +104,8 @@ PairsSummary run_pairs(const PairsOptions& options, std::istream& in, std::ostre
   for (std::string text; std::getline(in, text);) lines.push_back(parse_pair_line(text));
   std::vector<std::optional<Result<double>>> batch[2];  // float, double
   BatchError batch_error[2] = {BatchError::None, BatchError::None};
-  for (const PairMethod& b : options.methods) {
-    if (!b.batch()) continue;
+  if (std::any_of(options.methods.begin(), options.methods.end(),
+                  [](const PairMethod& m) { return m.batch(); })) {
     batch[0] = batch_answers<float>(lines, options.batch_kernel, batch_error[0]);
     if (!options.use_float) {
       batch[1] = batch_answers<double>(lines, options.batch_kernel, batch_error[1]);
@@ -165,8 +165,7 @@ struct PairsArgs {
 
 // The batch kernel spelt `s` (`name(BatchKernel)`), or nothing.
 std::optional<BatchKernel> parse_batch_kernel(const std::string& s) {
-  for (BatchKernel k :
-       {BatchKernel::Auto, BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
+  for (BatchKernel k : batch_kernels) {
     if (s == name(k)) return k;
   }
   return std::nullopt;
@@ -237,10 +236,12 @@ void add_pairs_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--format", args->format, "csv: the contract; table: aligned columns to read")
       ->check(CLI::IsMember({"csv", "table"}))
       ->capture_default_str();
+  std::vector<std::string> kernels;
+  for (BatchKernel k : batch_kernels) kernels.push_back(name(k));
   cmd->add_option("--batch-kernel", args->batch_kernel,
                   "The batch method's kernel: auto (the fastest here), portable, avx2 or avx512; "
                   "every kernel gives the same bits")
-      ->check(CLI::IsMember({"auto", "portable", "avx2", "avx512"}))
+      ->check(CLI::IsMember(kernels))
       ->capture_default_str();
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }

@@ -83,6 +83,10 @@ enum class BatchKernel : std::uint8_t {
   Avx512,    ///< 16 float or 8 double pairs per step with AVX-512 (F and DQ)
 };
 
+/// Every `BatchKernel`, in declaration order.
+inline constexpr BatchKernel batch_kernels[] = {BatchKernel::Auto, BatchKernel::Portable,
+                                                BatchKernel::Avx2, BatchKernel::Avx512};
+
 /// True when `kernel` can run here: Auto and Portable always; Avx2 (Avx512) when the library was
 /// built with `DYOP_BATCH_AVX2` (`DYOP_BATCH_AVX512`), on x86-64 with GCC or Clang, and the CPU
 /// has AVX2 and FMA (AVX-512 F and DQ), asked once with `__builtin_cpu_supports`.
