@@ -7,9 +7,9 @@
 namespace dyop::scenes::detail {
 namespace {
 
-constexpr int kBase = 10;          // 10 + 9 + ... + 1 = 55 boxes; 10² = 100 triangles in rows
-constexpr float kHalf = 0.5f;      // boxes of 1 m
-constexpr double kJitter = 0.001;  // m, horizontal placement noise from the seed
+constexpr int kBase = 10;      // 10 + 9 + ... + 1 = 55 boxes; 10² = 100 triangles in rows
+constexpr float kHalf = 0.5f;  // boxes of 1 m
+constexpr double kPlacementJitter = 0.001;  // m, horizontal placement noise from the seed
 
 }  // namespace
 
@@ -21,7 +21,7 @@ WorldBuild build_pyramid(World& world, workloads::Random& rng) {
   b2Body* top = nullptr;
   for (int row = 0; row < kBase; ++row) {
     for (int i = 0; i < kBase - row; ++i) {
-      const float x = (i - 0.5f * (kBase - row - 1)) * pitch + jitter(rng, kJitter);
+      const float x = (i - 0.5f * (kBase - row - 1)) * pitch + jitter(rng, kPlacementJitter);
       top = add_split_box(world, b2Vec2(x, kHalf + b2_polygonRadius + row * pitch), kHalf);
     }
   }
@@ -52,12 +52,12 @@ WorldBuild build_pyramid_rows(World& world, workloads::Random& rng) {
     const float y0 = b2_polygonRadius + row * (h + kRowGap);  // bottom of the row
     for (int i = 0; i < n; ++i) {
       top = add_body(world, b2_dynamicBody,
-                     b2Vec2(x0 + i * pitch + jitter(rng, kJitter), y0 + h / 3));
+                     b2Vec2(x0 + i * pitch + jitter(rng, kPlacementJitter), y0 + h / 3));
       add_triangle(top, up[0], up[1], up[2]);
       if (i + 1 < n) {
-        b2Body* d =
-            add_body(world, b2_dynamicBody,
-                     b2Vec2(x0 + (i + 0.5f) * pitch + jitter(rng, kJitter), y0 + 2 * h / 3));
+        b2Body* d = add_body(
+            world, b2_dynamicBody,
+            b2Vec2(x0 + (i + 0.5f) * pitch + jitter(rng, kPlacementJitter), y0 + 2 * h / 3));
         add_triangle(d, down[0], down[1], down[2]);
       }
     }

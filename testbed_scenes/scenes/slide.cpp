@@ -37,7 +37,7 @@ constexpr float kLaneGap = 4.0f;
 // Every lane's ground runs from kStart to kStart + kLength: 6 s at 6 m/s (the full run) from x = 0.
 constexpr float kStart = -2.0f;
 constexpr float kLength = 40.0f;
-constexpr double kJitter = 0.001;  // m, launch position noise from the seed
+constexpr double kSlideJitter = 0.001;  // m, launch position noise from the seed
 
 const char* ground_name(const Lane& lane) {
   switch (lane.cells) {
@@ -87,7 +87,7 @@ WorldBuild build_slide(World& world, workloads::Random& rng) {
     const float top = -kLaneGap * static_cast<float>(i);
     const bool ice = lane.body != nullptr && std::string(lane.body) != "wheel";
     add_ground(world, lane, top, ice ? slider_ice : slider_rubber);
-    const float x = jitter(rng, kJitter);
+    const float x = jitter(rng, kSlideJitter);
     if (lane.body == nullptr) {  // at rest, its middle on the junction of two cells at x = 0
       build.watched.push_back(
           add_split_box(world, b2Vec2(x, top + slider_box_half), slider_box_half, slider_rubber));

@@ -47,13 +47,14 @@ struct Launch {
 constexpr Launch kLaunches[] = {{"box", 6}, {"L", 6}, {"wheel", 1.8f}};
 
 constexpr float kTile = 0.5f;  // m, side of a tile
-// Every lane's ground runs from kStart over kColumns tiles: 6 s at 6 m/s (the full run) from x = 0.
-constexpr float kStart = -2.0f;
+// Every lane's ground runs from kTilesStart over kColumns tiles: 6 s at 6 m/s (the full run) from x
+// = 0.
+constexpr float kTilesStart = -2.0f;
 constexpr int kColumns = 80;
-constexpr int kRows = 2;           // tiles deep (chunks: kChunk)
-constexpr int kChunk = 8;          // tiles on a chunk's side
-constexpr float kLaneGap = 6.0f;   // m between lane tops: a chunk ground is 4 m deep
-constexpr double kJitter = 0.001;  // m, launch position noise from the seed
+constexpr int kRows = 2;                 // tiles deep (chunks: kChunk)
+constexpr int kChunk = 8;                // tiles on a chunk's side
+constexpr float kTilesLaneGap = 6.0f;    // m between lane tops: a chunk ground is 4 m deep
+constexpr double kLaunchJitter = 0.001;  // m, launch position noise from the seed
 // m: sliders start this far past a junction (their corner, or the L's left end). Why not on
 // it: a box launched with cores touching and its middle on a junction is parted from the ground
 // by the position solver unevenly over the junction's points (with any contact, Box2D's own too),
@@ -102,7 +103,8 @@ void add_cell(b2Body* body, const Cell& c, const Material& m) {
 // Ground of lane `top`: the cell in `column` and `row` (0: top row).
 Cell cell_at(const Ground& g, float top, int column, int row) {
   const bool junctions = g.layout == Layout::TJunctions || g.layout == Layout::TJunctionTiles;
-  return {b2Vec2(kStart + column * kTile, top - (row + 1) * kTile), junctions && column % 2 == 1};
+  return {b2Vec2(kTilesStart + column * kTile, top - (row + 1) * kTile),
+          junctions && column % 2 == 1};
 }
 
 // The tiles of a changing ground, one static body per tile in column order, and where each sits.
@@ -117,7 +119,7 @@ struct ChangingGround {
 void update_changing(ChangingGround& g, float x) {
   for (std::size_t k = 0; k < g.tiles.size(); ++k) {
     const int column = static_cast<int>(k) / kRows;
-    const float left = kStart + column * kTile;
+    const float left = kTilesStart + column * kTile;
     const bool wanted = left + kTile >= x - kPresentReach && left <= x + kPresentReach;
     if (wanted == g.present[k]) continue;
     g.present[k] = wanted;
@@ -151,7 +153,8 @@ std::shared_ptr<ChangingGround> add_ground(World& world, const Ground& g, float 
     }
     case Layout::Chunks:
       for (int c = 0; c < kColumns / kChunk; ++c) {
-        b2Body* body = add_body(world, b2_staticBody, b2Vec2(kStart + c * kChunk * kTile, top));
+        b2Body* body =
+            add_body(world, b2_staticBody, b2Vec2(kTilesStart + c * kChunk * kTile, top));
         for (int row = 0; row < rows; ++row) {
           for (int i = c * kChunk; i < (c + 1) * kChunk; ++i)
             add_cell(body, cell_at(g, top, i, row), m);
@@ -196,21 +199,22 @@ WorldBuild build_tile_map(World& world, workloads::Random& rng) {
   WorldBuild build;
   const Ground lanes{"tiles", Layout::Tiles};
   for (int lane = 0; lane < kMapLanes; ++lane) {
-    const float top = -kLaneGap * static_cast<float>(lane);
+    const float top = -kTilesLaneGap * static_cast<float>(lane);
     add_ground(world, lanes, top, slider_ice);
     const std::string name = "lane-" + std::to_string(lane + 1);
     for (int i = 0; i < kMapSliders; ++i) {
-      const float x = kLaunchOffset + kMapSpacing * static_cast<float>(i) + jitter(rng, kJitter);
+      const float x =
+          kLaunchOffset + kMapSpacing * static_cast<float>(i) + jitter(rng, kLaunchJitter);
       build.sliders.push_back(
           launch_slider(world, i % 2 == 0 ? "box" : "L", name, x, top, kMapSpeed));
     }
   }
-  const float debris_top = -kLaneGap * static_cast<float>(kMapLanes);
+  const float debris_top = -kTilesLaneGap * static_cast<float>(kMapLanes);
   add_ground(world, lanes, debris_top, slider_rubber);
   const float length = kColumns * kTile;
   for (int i = 0; i < kMapDebris; ++i) {
     const b2Vec2 at(
-        kStart + length * (static_cast<float>(i) + 0.5f) / kMapDebris + jitter(rng, 0.1),
+        kTilesStart + length * (static_cast<float>(i) + 0.5f) / kMapDebris + jitter(rng, 0.1),
         debris_top + rng.uniformf(0.5, 2.5));
     add_random_triangle(world, rng, at, rng.uniform(0.1, 0.25));
   }
@@ -223,10 +227,10 @@ WorldBuild build_tiles(World& world, workloads::Random& rng) {
   int lane = 0;
   for (const Ground& g : kGrounds) {
     for (const Launch& l : kLaunches) {
-      const float top = -kLaneGap * static_cast<float>(lane++);
+      const float top = -kTilesLaneGap * static_cast<float>(lane++);
       const bool rolling = std::string(l.body) == "wheel";
       const auto ground = add_ground(world, g, top, rolling ? slider_rubber : slider_ice);
-      const float x = kLaunchOffset + jitter(rng, kJitter);
+      const float x = kLaunchOffset + jitter(rng, kLaunchJitter);
       build.sliders.push_back(launch_slider(world, l.body, g.name, x, top, l.speed));
       if (ground) {
         update_changing(*ground, x);

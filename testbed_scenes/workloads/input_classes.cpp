@@ -16,8 +16,6 @@ namespace {
 using V = Vec2<double>;
 using Tri = std::array<V, 3>;
 
-bool valid(const Tri& t) { return Triangle<double>::make(t[0], t[1], t[2]).ok(); }
-
 V point_in(Random& g, double lo, double hi) {
   const double x = g.uniform(lo, hi);
   const double y = g.uniform(lo, hi);
@@ -35,8 +33,9 @@ Tri random_triangle(Random& g, const V& centre, double size) {
       const double r = g.uniform(0.3, 1.0);
       v = centre + size * r * g.unit_vector();
     }
-    if (valid(t) && std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() -
-                             (t[1] - t[0]).y() * (t[2] - t[0]).x()) > 0.05 * size * size) {
+    if (valid_in_double(t) &&
+        std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x()) >
+            0.05 * size * size) {
       return t;
     }
   }
@@ -129,7 +128,7 @@ RawPair sliver_pair(Random& g) {
     const Tri a = random_triangle(g, V::Zero(), 1.0);
     RawPair p{a, sliver(g, point_in(g, -1, 1))};
     if (g.coin()) p.a = sliver(g, point_in(g, -0.3, 0.3));
-    if (valid(p.a) && valid(p.b)) return p;
+    if (valid_in_double(p.a) && valid_in_double(p.b)) return p;
   }
 }
 
@@ -154,7 +153,7 @@ RawPair near_parallel(Random& g) {
     const V apex = start + 0.5 * length * f + g.uniform(0.3, 1.0) * out;
     const Tri shuffled_a = g.shuffled(a);
     RawPair pair{shuffled_a, g.shuffled({start, start + length * f, apex})};
-    if (valid(pair.b)) return pair;
+    if (valid_in_double(pair.b)) return pair;
   }
 }
 
@@ -411,7 +410,8 @@ std::vector<RawPair> make_pairs(InputClass c, int count, std::uint64_t seed, Pre
 }
 
 std::vector<RawPair> make_valid_pairs(InputClass c, int count, std::uint64_t seed) {
-  return draw(c, count, seed, Precision::Double, valid_in_double);
+  return draw(c, count, seed, Precision::Double,
+              [](const RawPair& p) { return valid_in_double(p); });
 }
 
 }  // namespace dyop::workloads

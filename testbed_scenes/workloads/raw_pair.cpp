@@ -5,8 +5,6 @@ namespace {
 
 using V = Vec2<double>;
 
-bool valid(const std::array<V, 3>& t) { return Triangle<double>::make(t[0], t[1], t[2]).ok(); }
-
 // Through a volatile float: GCC 12.2 at -O2 folds a vectorised double → float → double round trip
 // of two coordinates into nothing (wrong code; found by the stress tests, where the rounding went
 // missing).
@@ -18,7 +16,11 @@ double rounded(Precision p, double x) {
 
 }  // namespace
 
-bool valid_in_double(const RawPair& p) { return valid(p.a) && valid(p.b); }
+bool valid_in_double(const std::array<V, 3>& t) {
+  return Triangle<double>::make(t[0], t[1], t[2]).ok();
+}
+
+bool valid_in_double(const RawPair& p) { return valid_in_double(p.a) && valid_in_double(p.b); }
 
 PairBox pair_box(const RawPair& p) {
   PairBox box{p.a[0], p.a[0]};

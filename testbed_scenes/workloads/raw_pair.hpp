@@ -32,6 +32,8 @@ BuiltPair<T> build(const RawPair& p) {
 
 /// True when both triangles are valid in double.
 bool valid_in_double(const RawPair& p);
+/// True when the triangle is valid in double.
+bool valid_in_double(const std::array<Vec2<double>, 3>& t);
 
 /// The union of both triangles' bounding boxes.
 struct PairBox {

@@ -10,7 +10,7 @@ namespace {
 
 // 100 m/s is 1.7 m per step, 28 times the wall's thickest part; Box2D caps a step's translation
 // at b2_maxTranslation (2 m), so this is about as fast as a Box2D body goes.
-constexpr float kSpeed = 100.0f;
+constexpr float kBulletSpeed = 100.0f;
 constexpr float kWallThickness = 0.06f;  // at its middle; thinner towards its ends
 
 struct Shot {
@@ -27,7 +27,7 @@ float fire(const Shot& shot) {
   projectile->SetBullet(shot.bullet);
   const b2Fixture* f =
       add_triangle(projectile, b2Vec2(-0.05f, -0.04f), b2Vec2(0.05f, 0.0f), b2Vec2(-0.05f, 0.04f));
-  projectile->SetLinearVelocity(b2Vec2(kSpeed, 0.0f));
+  projectile->SetLinearVelocity(b2Vec2(kBulletSpeed, 0.0f));
   const auto* shape = static_cast<const b2PolygonShape*>(f->GetShape());
   float reach = -5.0f;
   for (int i = 0; i < kStepsPerSecond; ++i) {

@@ -18,7 +18,6 @@
 namespace dyop::box2d::testing {
 namespace {
 
-const worlds::Material kIce{1.0f, 0.0f};
 constexpr float kTile = 0.5f;
 
 // The corners of a row of `columns` square tiles of side kTile whose tops are y = 0, from x = 0,

@@ -30,9 +30,8 @@
 namespace dyop::box2d::testing {
 namespace {
 
-constexpr float kSpeed = 6.0f;
+constexpr float kSlideSpeed = 6.0f;
 constexpr float kSeconds = 6.0f;
-const worlds::Material kIce{1.0f, 0.0f};
 // How far a body may sink below the ground's top: Box2D lets skins (1 cm each) overlap by about
 // b2_linearSlop at rest, and a sliding body a little more.
 constexpr float kSinkAllowed = 0.02f;
@@ -185,7 +184,7 @@ TEST_P(TenThousandTriangles, BoxGlidesOverTheGround) {
   ASSERT_TRUE(install(Backend::Dyop).ok());
   World world;
   add_cell_ground(world, -312.5f, 625.0f, 0.25f, Pattern::Diagonal);  // 2 · 2500 cells · 2
-  b2Body* box = add_slider(world, Slider::Box, 0.0f, kSpeed);
+  b2Body* box = add_slider(world, Slider::Box, 0.0f, kSlideSpeed);
   const auto t0 = std::chrono::steady_clock::now();
   if (fixed) fix_internal_edges(world.get());
   const auto t1 = std::chrono::steady_clock::now();
@@ -207,7 +206,7 @@ TEST_P(TenThousandTriangles, BoxGlidesOverTheGround) {
       ms(t2, t3));
   EXPECT_GT(stats().internal_edge_pairs, 0u);
   EXPECT_LE(max_vertical, 0.05f);
-  EXPECT_GE(box->GetPosition().x, 0.98f * kSpeed * 600 / kStepsPerSecond);
+  EXPECT_GE(box->GetPosition().x, 0.98f * kSlideSpeed * 600 / kStepsPerSecond);
   ASSERT_TRUE(uninstall().ok());
 }
 

@@ -10,8 +10,6 @@
 namespace dyop::box2d::testing {
 namespace {
 
-constexpr float kHalf = 0.5f;  // boxes of 1 m
-
 struct Motion {
   float top_displacement = 0;  // largest distance of the top body from where it was placed
   float max_tilt = 0;          // largest |angle| of any body
@@ -54,10 +52,10 @@ TEST_P(Stacking, TenSplitBoxesStackedStayStandingFor10s) {
   World world;
   add_triangle_ground(world, 5.0f);
   std::vector<b2Body*> boxes;
-  const float pitch = 2 * kHalf + b2_polygonRadius;
+  const float pitch = 2 * kBoxHalf + b2_polygonRadius;
   for (int i = 0; i < 10; ++i) {
     boxes.push_back(
-        add_split_box(world, b2Vec2(0.0f, kHalf + b2_polygonRadius + i * pitch), kHalf));
+        add_split_box(world, b2Vec2(0.0f, kBoxHalf + b2_polygonRadius + i * pitch), kBoxHalf));
   }
   const Motion m = run(world, boxes.back(), boxes, 10);
   report("stack", contact(), m);
@@ -73,13 +71,13 @@ TEST_P(Stacking, PyramidOf55SplitBoxesStaysStandingFor10s) {
   World world;
   add_triangle_ground(world, 10.0f);
   std::vector<b2Body*> boxes;
-  const float pitch = 2 * kHalf + b2_polygonRadius;
+  const float pitch = 2 * kBoxHalf + b2_polygonRadius;
   constexpr int kBase = 10;  // 10 + 9 + ... + 1 = 55 bodies, 110 triangles
   for (int row = 0; row < kBase; ++row) {
     for (int i = 0; i < kBase - row; ++i) {
       const float x = (i - 0.5f * (kBase - row - 1)) * pitch;
       boxes.push_back(
-          add_split_box(world, b2Vec2(x, kHalf + b2_polygonRadius + row * pitch), kHalf));
+          add_split_box(world, b2Vec2(x, kBoxHalf + b2_polygonRadius + row * pitch), kBoxHalf));
     }
   }
   ASSERT_EQ(boxes.size(), 55u);

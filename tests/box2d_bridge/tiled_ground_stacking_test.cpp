@@ -15,8 +15,7 @@ namespace dyop::box2d::testing {
 namespace {
 
 constexpr float kTile = 0.5f;
-constexpr int kColumns = 32;   // 16 m of ground from x = -8
-constexpr float kHalf = 0.5f;  // boxes of 1 m, as the `pyramid` scene's
+constexpr int kColumns = 32;  // 16 m of ground from x = -8
 // m: a structure stands when its top body moves no more than this over the run (one that falls
 // moves by metres; a stack of eight 1 m boxes sways by 3 cm on one piece), and no more than this
 // beyond its motion on one piece.
@@ -55,14 +54,14 @@ void add_ground(World& world, Ground g) {
 float top_motion(Ground g, int base) {
   World world;
   add_ground(world, g);
-  const float pitch = 2 * kHalf + b2_polygonRadius;
+  const float pitch = 2 * kBoxHalf + b2_polygonRadius;
   const int rows = base > 0 ? base : -base;
   b2Body* top = nullptr;
   for (int row = 0; row < rows; ++row) {
     const int count = base > 0 ? base - row : 1;
     for (int i = 0; i < count; ++i) {
       const float x = 0.125f + (i - 0.5f * (count - 1)) * pitch;
-      top = add_split_box(world, b2Vec2(x, kHalf + b2_polygonRadius + row * pitch), kHalf);
+      top = add_split_box(world, b2Vec2(x, kBoxHalf + b2_polygonRadius + row * pitch), kBoxHalf);
     }
   }
   for (int i = 0; i < 60; ++i) world.step();  // settle, as the scenes do

@@ -18,10 +18,12 @@
 #include "workloads/batch_arrays.hpp"
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/input_classes.hpp"
+#include "support/overlap_along.hpp"
 
 namespace dyop {
 namespace {
 
+using test_support::overlap_along;
 using workloads::RawPair;
 using V2 = Vec2<double>;
 
@@ -104,18 +106,6 @@ struct Outputs {
     return true;
   }
 };
-
-// max_A(n·a) − min_B(n·b) in A's frame, in double: the overlap along n. A penetrating pair's
-// normal is a minimum-translation axis exactly when overlap(n) == depth, whichever axis wins a tie.
-double overlap_along(const RawPair& p, const V2& n) {
-  double most_a = -std::numeric_limits<double>::infinity();
-  double least_b = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    most_a = std::max(most_a, n.dot(p.a[i] - p.a[0]));
-    least_b = std::min(least_b, n.dot(p.b[i] - p.a[0]));
-  }
-  return most_a - least_b;
-}
 
 double to_segment(const V2& x, const V2& q0, const V2& q1) {
   const V2 e = q1 - q0;

@@ -13,6 +13,7 @@
 #include "dyop/sat.hpp"
 #include "workloads/input_classes.hpp"
 #include "support/make_triangle.hpp"
+#include "support/overlap_along.hpp"
 #include "support/result_checks.hpp"
 #include "support/scalars.hpp"
 
@@ -21,6 +22,7 @@ namespace {
 
 using test_support::all_finite;
 using test_support::has_features;
+using test_support::overlap_along;
 
 template <class T>
 class Epa : public ::testing::Test {};
@@ -32,7 +34,7 @@ using test_support::tri;
 
 // Hand-worked answers on triangles of size ~1-10: a few hundred eps of either scalar.
 template <class T>
-T tol() {
+T hand_worked_tol() {
   return T(400) * Eigen::NumTraits<T>::epsilon();
 }
 
@@ -43,11 +45,11 @@ TYPED_TEST(Epa, ApartPairGivesTheDistanceWitnessesAndFeatures) {
   const auto b = tri<T>(-1, 2, 3, 2, 1, 4);
   const Result<T> r = epa(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Separated);
-  EXPECT_NEAR(r.separation, 1, tol<T>());
+  EXPECT_NEAR(r.separation, 1, hand_worked_tol<T>());
   EXPECT_EQ(r.depth, 0);
-  EXPECT_NEAR((r.normal - Vec2<T>(0, 1)).norm(), 0, tol<T>());
-  EXPECT_NEAR((r.witness_a - Vec2<T>(1, 1)).norm(), 0, tol<T>());
-  EXPECT_NEAR((r.witness_b - Vec2<T>(1, 2)).norm(), 0, tol<T>());
+  EXPECT_NEAR((r.normal - Vec2<T>(0, 1)).norm(), 0, hand_worked_tol<T>());
+  EXPECT_NEAR((r.witness_a - Vec2<T>(1, 1)).norm(), 0, hand_worked_tol<T>());
+  EXPECT_NEAR((r.witness_b - Vec2<T>(1, 2)).norm(), 0, hand_worked_tol<T>());
   EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 2}, {Feature::Type::Edge, 0}));
   EXPECT_GT(r.iterations, 0);
 }
@@ -59,8 +61,8 @@ TYPED_TEST(Epa, VertexToVertexDistanceIsAlongTheJoiningLine) {
   const auto b = tri<T>(2, 1, 3, 1, 2, 2);
   const Result<T> r = epa(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Separated);
-  EXPECT_NEAR(r.separation, std::sqrt(T(2)), tol<T>());
-  EXPECT_NEAR((r.normal - Vec2<T>(1, 1) / std::sqrt(T(2))).norm(), 0, tol<T>());
+  EXPECT_NEAR(r.separation, std::sqrt(T(2)), hand_worked_tol<T>());
+  EXPECT_NEAR((r.normal - Vec2<T>(1, 1) / std::sqrt(T(2))).norm(), 0, hand_worked_tol<T>());
   EXPECT_TRUE(has_features(r, {Feature::Type::Vertex, 1}, {Feature::Type::Vertex, 0}));
 }
 
@@ -71,11 +73,12 @@ TYPED_TEST(Epa, VertexIntoFaceGivesItsDepthNormalWitnessesAndFeatures) {
   const auto b = tri<T>(1, -1, 2, -1, 1.5, 0.25);
   const Result<T> r = epa(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Penetrating);
-  EXPECT_NEAR(r.depth, 0.25, tol<T>());
-  EXPECT_NEAR(r.separation, -0.25, tol<T>());
-  EXPECT_NEAR((r.normal - Vec2<T>(0, -1)).norm(), 0, tol<T>());  // B moves down, out of A
-  EXPECT_NEAR((r.witness_b - Vec2<T>(1.5, 0.25)).norm(), 0, tol<T>());
-  EXPECT_NEAR((r.witness_a - Vec2<T>(1.5, 0)).norm(), 0, tol<T>());
+  EXPECT_NEAR(r.depth, 0.25, hand_worked_tol<T>());
+  EXPECT_NEAR(r.separation, -0.25, hand_worked_tol<T>());
+  EXPECT_NEAR((r.normal - Vec2<T>(0, -1)).norm(), 0,
+              hand_worked_tol<T>());  // B moves down, out of A
+  EXPECT_NEAR((r.witness_b - Vec2<T>(1.5, 0.25)).norm(), 0, hand_worked_tol<T>());
+  EXPECT_NEAR((r.witness_a - Vec2<T>(1.5, 0)).norm(), 0, hand_worked_tol<T>());
   EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 2}));
 }
 
@@ -86,8 +89,8 @@ TYPED_TEST(Epa, AxisAlignedRightTrianglesOverlapByTheirLegs) {
   const auto b = tri<T>(0.1, 0.5, -2, 0.5, 0.1, 1.5);
   const Result<T> r = epa(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Penetrating);
-  EXPECT_NEAR(r.depth, 0.1, tol<T>());
-  EXPECT_NEAR((r.normal - Vec2<T>(-1, 0)).norm(), 0, tol<T>());
+  EXPECT_NEAR(r.depth, 0.1, hand_worked_tol<T>());
+  EXPECT_NEAR((r.normal - Vec2<T>(-1, 0)).norm(), 0, hand_worked_tol<T>());
 }
 
 // B (legs 1) sits inside A (legs 10): the shortest way out is 2 to the left (down is 2.5).
@@ -97,8 +100,8 @@ TYPED_TEST(Epa, ContainedTriangleDepthIsTheShortestWayOut) {
   const auto b = tri<T>(1, 1.5, 2, 1.5, 1, 2.5);
   const Result<T> r = epa(a, b, {Level::Contact});
   EXPECT_EQ(r.status, Status::Penetrating);
-  EXPECT_NEAR(r.depth, 2, tol<T>() * 10);
-  EXPECT_NEAR((r.normal - Vec2<T>(-1, 0)).norm(), 0, tol<T>());
+  EXPECT_NEAR(r.depth, 2, hand_worked_tol<T>() * 10);
+  EXPECT_NEAR((r.normal - Vec2<T>(-1, 0)).norm(), 0, hand_worked_tol<T>());
 }
 
 // A − A is symmetric: the depth is A's smallest altitude (1, over the base), in either direction.
@@ -109,8 +112,8 @@ TYPED_TEST(Epa, IdenticalTrianglesDepthIsTheSmallestAltitude) {
   const Result<T> r = epa(a, b, {Level::Manifold});
   ASSERT_TRUE(all_finite(r));
   EXPECT_EQ(r.status, Status::Penetrating);
-  EXPECT_NEAR(r.depth, 1, tol<T>());
-  EXPECT_NEAR(std::abs(r.normal.y()), 1, tol<T>());
+  EXPECT_NEAR(r.depth, 1, hand_worked_tol<T>());
+  EXPECT_NEAR(std::abs(r.normal.y()), 1, hand_worked_tol<T>());
 }
 
 // The origin of A − B on its boundary: vertex on edge, edge on edge, vertex on vertex.
@@ -142,7 +145,7 @@ TYPED_TEST(Epa, BoundaryTripleJustApartTouchingAndDeep) {
     const auto b = tri<T>(-1, c.dy, 1, c.dy, 0, 2 + c.dy);
     const Result<T> r = epa(a, b, {Level::Depth});
     EXPECT_EQ(r.status, c.status);
-    EXPECT_NEAR(r.separation, c.dy, tol<T>() * 10);
+    EXPECT_NEAR(r.separation, c.dy, hand_worked_tol<T>() * 10);
     EXPECT_NEAR((r.normal - Vec2<T>(0, 1)).norm(), 0, T(1e-3));
   }
 }
@@ -162,7 +165,7 @@ TYPED_TEST(Epa, ClockwiseInputReportsFeaturesInTheCallersOrder) {
     const auto b = tri<T>(1.5, 0.25, 2, -1, 1, -1);  // apex is the caller's vertex 0
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Penetrating);
-    EXPECT_NEAR(r.depth, 0.25, tol<T>());
+    EXPECT_NEAR(r.depth, 0.25, hand_worked_tol<T>());
     EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 2}, {Feature::Type::Vertex, 0}));
   }
 }
@@ -176,7 +179,7 @@ TYPED_TEST(Epa, EachLevelLeavesTheFieldsOfHigherLevelsUntouched) {
   EXPECT_EQ(overlap.separation, 0);
   EXPECT_TRUE(overlap.normal.isZero());
   const Result<T> depth = epa(a, b, {Level::Depth});
-  EXPECT_NEAR(depth.depth, 0.25, tol<T>());
+  EXPECT_NEAR(depth.depth, 0.25, hand_worked_tol<T>());
   EXPECT_TRUE(depth.witness_a.isZero());
   EXPECT_EQ(depth.feature_a.type, Feature::Type::None);
   const Result<T> contact = epa(a, b, {Level::Contact});
@@ -211,8 +214,9 @@ TYPED_TEST(Epa, ManifoldOnAnUnambiguousAxisIsSats) {
     EXPECT_EQ(e.manifold.incident_edge, s.manifold.incident_edge);
     for (int i = 0; i < 2; ++i) {
       EXPECT_EQ(e.manifold.points[i].key, s.manifold.points[i].key);
-      EXPECT_NEAR((e.manifold.points[i].point - s.manifold.points[i].point).norm(), 0, tol<T>());
-      EXPECT_NEAR(e.manifold.points[i].separation, -0.25, tol<T>());
+      EXPECT_NEAR((e.manifold.points[i].point - s.manifold.points[i].point).norm(), 0,
+                  hand_worked_tol<T>());
+      EXPECT_NEAR(e.manifold.points[i].separation, -0.25, hand_worked_tol<T>());
     }
   }
   // Apart by 0.1: a speculative manifold within a margin of 0.5, none without one.
@@ -230,14 +234,15 @@ TYPED_TEST(Epa, AccuracyIsRelativeToSizeNotToDistanceFromTheOrigin) {
         tri<T>(offset + 1, offset - 1, offset + 2, offset - 1, offset + 1.5, offset + T(0.25));
     const Result<T> r = epa(a, b, {Level::Contact});
     EXPECT_EQ(r.status, Status::Penetrating);
-    EXPECT_NEAR(r.depth, 0.25, tol<T>() * std::max(T(1), offset * Eigen::NumTraits<T>::epsilon()));
+    EXPECT_NEAR(r.depth, 0.25,
+                hand_worked_tol<T>() * std::max(T(1), offset * Eigen::NumTraits<T>::epsilon()));
   }
   for (T s : {T(1e-6), T(1e6)}) {
     const auto a = tri<T>(0, 0, 4 * s, 0, 0, 4 * s);
     const auto b = tri<T>(s, -s, 2 * s, -s, 1.5f * s, T(0.25) * s);
     const Result<T> r = epa(a, b, {Level::Depth});
     EXPECT_EQ(r.status, Status::Penetrating);
-    EXPECT_NEAR(r.depth / s, 0.25, tol<T>());
+    EXPECT_NEAR(r.depth / s, 0.25, hand_worked_tol<T>());
   }
 }
 
@@ -250,8 +255,8 @@ TYPED_TEST(Epa, SwappingTheTrianglesReversesTheNormal) {
     const Result<T> ab = epa(a, b);
     const Result<T> ba = epa(b, a);
     EXPECT_EQ(ab.status, ba.status);
-    EXPECT_NEAR(ab.separation, ba.separation, tol<T>());
-    EXPECT_NEAR((ab.normal + ba.normal).norm(), 0, tol<T>());
+    EXPECT_NEAR(ab.separation, ba.separation, hand_worked_tol<T>());
+    EXPECT_NEAR((ab.normal + ba.normal).norm(), 0, hand_worked_tol<T>());
   }
 }
 
@@ -274,17 +279,6 @@ constexpr double kSeparationBound = 1e-12;
 // an edge of A − B across two nearly collinear ones). A larger angle must be a tie: EPA's normal
 // then has to give the same depth as sat's.
 constexpr double kNormalBound = 1e-12;
-
-// Overlap of the pair along unit `u` (max over A − min over B), in a frame on A's first vertex.
-double overlap_along(const RawPair& p, const Vec2<double>& u) {
-  double most_a = -HUGE_VAL;
-  double least_b = HUGE_VAL;
-  for (int i = 0; i < 3; ++i) {
-    most_a = std::max(most_a, u.dot(p.a[i] - p.a[0]));
-    least_b = std::min(least_b, u.dot(p.b[i] - p.a[0]));
-  }
-  return most_a - least_b;
-}
 
 struct Figures {
   int pairs = 0;

@@ -24,7 +24,7 @@ using box2d::Backend;
 constexpr std::uint64_t kSeed = 1;
 // 1.5 s of simulated time: dropped bodies have met the ground and the structures rest, so the
 // streams hold both first contacts and resting pairs, and the tests stay short.
-constexpr int kSteps = 90;
+constexpr int kStreamSteps = 90;
 
 // Per step: the recorded calls on triangle pairs and on other polygon pairs.
 struct StepCounts {
@@ -46,7 +46,7 @@ std::map<int, StepCounts> recorded_per_step(const ContactStream& s) {
 std::map<int, StepCounts> plugin_per_step(const std::string& scene) {
   std::map<int, StepCounts> out;
   const std::unique_ptr<Scene> world = make_scene(scene, Backend::Box2D, kSeed);
-  for (int step = 1; step <= kSteps; ++step) {
+  for (int step = 1; step <= kStreamSteps; ++step) {
     const box2d::Stats before = box2d::stats();
     world->step();
     const box2d::Stats after = box2d::stats();
@@ -58,7 +58,7 @@ std::map<int, StepCounts> plugin_per_step(const std::string& scene) {
 }
 
 void expect_recorder_matches_plugin(const std::string& scene) {
-  const ContactStream stream = record_stream(scene, kSteps, kSeed);
+  const ContactStream stream = record_stream(scene, kStreamSteps, kSeed);
   ASSERT_FALSE(stream.calls.empty());
   std::map<int, StepCounts> recorded = recorded_per_step(stream);
   for (const auto& [step, evaluated] : plugin_per_step(scene)) {
@@ -85,7 +85,7 @@ TEST(ContactStream, RecordedUpdatesEqualPluginEvaluationsEveryStepMixed) {
 // re-evaluates those contacts (`SolveTOI`) on top of `Collide`'s updates, and those are not
 // recorded: never fewer evaluations than recorded, and some more once triangles land.
 TEST(ContactStream, RecordedUpdatesAreCollidesShareOfPluginEvaluationsRain) {
-  const ContactStream stream = record_stream("rain", kSteps, kSeed);
+  const ContactStream stream = record_stream("rain", kStreamSteps, kSeed);
   std::map<int, StepCounts> recorded = recorded_per_step(stream);
   bool time_of_impact = false;
   for (const auto& [step, evaluated] : plugin_per_step("rain")) {
@@ -96,15 +96,15 @@ TEST(ContactStream, RecordedUpdatesAreCollidesShareOfPluginEvaluationsRain) {
 }
 
 TEST(ContactStream, WorldEvaluationsAreTheRecordedCallsPlusTimeOfImpactOnes) {
-  EXPECT_EQ(world_evaluations("pyramid", kSteps, kSeed),
-            record_stream("pyramid", kSteps, kSeed).calls.size());
-  EXPECT_GT(world_evaluations("rain", kSteps, kSeed),
-            record_stream("rain", kSteps, kSeed).calls.size());
+  EXPECT_EQ(world_evaluations("pyramid", kStreamSteps, kSeed),
+            record_stream("pyramid", kStreamSteps, kSeed).calls.size());
+  EXPECT_GT(world_evaluations("rain", kStreamSteps, kSeed),
+            record_stream("rain", kStreamSteps, kSeed).calls.size());
 }
 
 TEST(ContactStream, ReplayingBox2DBackendAgreesWithB2CollidePolygonsExactly) {
   for (const char* scene : {"rain", "mixed"}) {
-    const ContactStream stream = record_stream(scene, kSteps, kSeed);
+    const ContactStream stream = record_stream(scene, kStreamSteps, kSeed);
     const StreamAgreement a = compare_with_box2d(stream, Backend::Box2D);
     EXPECT_EQ(a.calls, stream.calls.size()) << scene;
     EXPECT_EQ(a.same_point_count, a.calls) << scene;
@@ -135,7 +135,7 @@ bool same_manifold(const b2Manifold& x, const b2Manifold& y) {
 
 TEST(ContactStream, SatAndDyopReplaysGiveIdenticalManifolds) {
   for (const char* scene : {"rain", "pyramid", "slivers"}) {
-    const ContactStream stream = record_stream(scene, kSteps, kSeed);
+    const ContactStream stream = record_stream(scene, kStreamSteps, kSeed);
     const std::vector<b2Manifold> sat = replay_manifolds(stream, Backend::Sat);
     const std::vector<b2Manifold> dyop = replay_manifolds(stream, Backend::Dyop);
     ASSERT_EQ(sat.size(), stream.calls.size());
@@ -147,7 +147,7 @@ TEST(ContactStream, SatAndDyopReplaysGiveIdenticalManifolds) {
 }
 
 TEST(ContactStream, MeasuredStreamCountsEveryRecordedCall) {
-  const ContactStream stream = record_stream("stack", kSteps, kSeed);
+  const ContactStream stream = record_stream("stack", kStreamSteps, kSeed);
   StreamOptions options;
   options.passes = 1;
   options.min_pass_ms = 0;  // one replay per runner: only the counts are checked
@@ -166,10 +166,10 @@ TEST(ContactStream, MeasuredStreamCountsEveryRecordedCall) {
 }
 
 TEST(ContactStream, EveryStreamCallComesFromAStepAfterTheFirst) {
-  const ContactStream stream = record_stream("tumbler", kSteps, kSeed);
+  const ContactStream stream = record_stream("tumbler", kStreamSteps, kSeed);
   for (const StreamCall& c : stream.calls) {
     ASSERT_GE(c.step, 2);
-    ASSERT_LE(c.step, kSteps);
+    ASSERT_LE(c.step, kStreamSteps);
     ASSERT_LT(static_cast<std::size_t>(c.contact), stream.contacts.size());
   }
 }
@@ -186,17 +186,17 @@ std::string invalid_argument_message(F&& f) {
 
 TEST(ContactStream, BadInputIsRefusedWithAMessage) {
   EXPECT_NE(invalid_argument_message([] {
-              record_stream("no-such-scene", kSteps, kSeed);
+              record_stream("no-such-scene", kStreamSteps, kSeed);
             }).find("unknown scene 'no-such-scene'"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([] {
-              record_stream("paper", kSteps, kSeed);
+              record_stream("paper", kStreamSteps, kSeed);
             }).find("no Box2D world"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([] { record_stream("rain", 1, kSeed); }).find("2 steps"),
             std::string::npos);
   EXPECT_NE(invalid_argument_message([] {
-              world_evaluations("no-such-scene", kSteps, kSeed);
+              world_evaluations("no-such-scene", kStreamSteps, kSeed);
             }).find("unknown scene"),
             std::string::npos);
 

@@ -19,17 +19,17 @@ namespace {
 
 using namespace experiments;  // the experiments these tests run over the scenes
 
-constexpr int kSteps = 20;
+constexpr int kScalingSteps = 20;
 
 SceneMetrics run_rain(int falling, box2d::Backend backend) {
   const std::unique_ptr<Scene> scene = make_rain(falling, backend, 3);
-  for (int i = 0; i < kSteps; ++i) scene->step();
+  for (int i = 0; i < kScalingSteps; ++i) scene->step();
   return scene->metrics();
 }
 
 TEST(RainScene, AtTheCataloguesSizeIsTheCataloguesScene) {
   const SceneMetrics sized = run_rain(rain_triangles, box2d::Backend::Dyop);
-  const SceneMetrics catalogue = run_scene("rain", box2d::Backend::Dyop, kSteps, 3);
+  const SceneMetrics catalogue = run_scene("rain", box2d::Backend::Dyop, kScalingSteps, 3);
   EXPECT_EQ(sized.hash, catalogue.hash);
   EXPECT_EQ(sized.triangles, catalogue.triangles);
 }

@@ -9,16 +9,16 @@
 namespace dyop::scenes {
 namespace {
 
-constexpr int kSteps = 40;
+constexpr int kDeterminismSteps = 40;
 
 class EverySceneSeed : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EverySceneSeed, SameSeedSameHashOtherSeedOtherHash) {
   const std::string& name = GetParam();
   for (box2d::Backend b : {box2d::Backend::Dyop, box2d::Backend::LinCanny}) {
-    const SceneMetrics first = run_scene(name, b, kSteps, 11);
-    const SceneMetrics again = run_scene(name, b, kSteps, 11);
-    const SceneMetrics other = run_scene(name, b, kSteps, 12);
+    const SceneMetrics first = run_scene(name, b, kDeterminismSteps, 11);
+    const SceneMetrics again = run_scene(name, b, kDeterminismSteps, 11);
+    const SceneMetrics other = run_scene(name, b, kDeterminismSteps, 12);
     EXPECT_EQ(first.hash, again.hash) << box2d::name(b);
     EXPECT_EQ(first.triangle_pairs, again.triangle_pairs) << box2d::name(b);
     EXPECT_EQ(first.pd_error_max, again.pd_error_max) << box2d::name(b);

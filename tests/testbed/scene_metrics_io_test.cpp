@@ -9,6 +9,7 @@
 #include <string>
 
 #include "report/metrics_io.hpp"
+#include "support/metrics_json.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -16,11 +17,7 @@ namespace {
 
 using namespace report;  // the metrics as the report writes them
 
-nlohmann::json json_of(const SceneMetrics& m) {
-  std::ostringstream out;
-  write_json(m, out);
-  return nlohmann::json::parse(out.str());  // throws on invalid JSON
-}
+using testing::json_of;
 
 TEST(MetricsJson, HasEveryKeyTheIssueAsksForWithItsType) {
   const nlohmann::json j = json_of(run_scene("stack", box2d::Backend::Dyop, 70, 5));

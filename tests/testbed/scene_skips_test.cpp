@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "report/metrics_io.hpp"
+#include "support/metrics_json.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -133,11 +134,7 @@ TEST(SkipArgument, AnUnknownOrEmptyNameIsAnErrorNamingIt) {
   }
 }
 
-nlohmann::json json_of(const SceneMetrics& m) {
-  std::ostringstream out;
-  write_json(m, out);
-  return nlohmann::json::parse(out.str());
-}
+using testing::json_of;
 
 TEST(SkipFigures, JsonHasTheSkipCountsAndTheSkipList) {
   Config some = Config::none();

@@ -11,13 +11,13 @@ namespace {
 
 using namespace experiments;  // the experiments these tests run over the scenes
 
-constexpr int kSteps = 600;  // 10 s
+constexpr int kStandingSteps = 600;  // 10 s
 
 class Standing : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Standing, WithDyopAsWithBox2D) {
-  const SceneMetrics box2d = run_scene(GetParam(), box2d::Backend::Box2D, kSteps, 0);
-  const SceneMetrics dyop = run_scene(GetParam(), box2d::Backend::Dyop, kSteps, 0);
+  const SceneMetrics box2d = run_scene(GetParam(), box2d::Backend::Box2D, kStandingSteps, 0);
+  const SceneMetrics dyop = run_scene(GetParam(), box2d::Backend::Dyop, kStandingSteps, 0);
   ASSERT_TRUE(box2d.top_displacement.has_value());
   ASSERT_TRUE(dyop.top_displacement.has_value());
   EXPECT_LE(*box2d.top_displacement, standing_displacement) << "Box2D's own reference";

@@ -13,7 +13,7 @@
 namespace dyop::scenes {
 namespace {
 
-constexpr int kSteps = 30;  // half a second: everything is built and in motion
+constexpr int kMotionSteps = 30;  // half a second: everything is built and in motion
 
 using Case = std::tuple<std::string, box2d::Backend>;
 
@@ -21,10 +21,10 @@ class EveryScene : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EveryScene, RunsWithoutNaNAndWithoutFallbacks) {
   const auto& [name, backend] = GetParam();
-  const SceneMetrics m = run_scene(name, backend, kSteps, 7);
+  const SceneMetrics m = run_scene(name, backend, kMotionSteps, 7);
   EXPECT_EQ(m.scene, name);
   EXPECT_EQ(m.runner, Runner{backend});
-  EXPECT_EQ(m.steps, kSteps);
+  EXPECT_EQ(m.steps, kMotionSteps);
   EXPECT_FALSE(m.nan_detected);
   EXPECT_TRUE(all_finite(m));
   EXPECT_GE(m.narrowphase_ns_per_pair, 0);

@@ -19,6 +19,11 @@ using worlds::add_triangle_ground;
 using worlds::World;
 constexpr int kStepsPerSecond = worlds::steps_per_second;
 
+// A frictionless material of unit density: bodies glide on it.
+inline const worlds::Material kIce{1.0f, 0.0f};
+// Half the side of the 1 m boxes the stacking tests build (metres).
+constexpr float kBoxHalf = 0.5f;
+
 // Deepest overlap of the skins over the body's touching contacts (metres, 0 when none overlap):
 // minus the least world-manifold separation, which Box2D measures between the skins. Box2D's
 // position solver lets skins overlap by about b2_linearSlop at rest, by design.
