@@ -247,7 +247,8 @@ void register_method(const MethodInfo& row) {
             benchmark::RegisterBenchmark(bm((std::string(row.name) + "-stream-1M").c_str()).c_str(),
                                          bm_batch<T>, c, l, std::size_t{1} << 20,
                                          BatchKernel::Auto);
-            for (BatchKernel k : {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
+            for (BatchKernel k : batch_kernels) {
+              if (k == BatchKernel::Auto) continue;  // the row above
               const std::string forced = std::string(row.name) + "-" + name(k);
               benchmark::RegisterBenchmark(bm(forced.c_str()).c_str(), bm_batch<T>, c, l, 0, k);
             }

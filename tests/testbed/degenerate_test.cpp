@@ -160,7 +160,7 @@ void check_batch(const std::vector<RawPair>& rows) {
                            c[10].data(),
                            c[11].data(),
                            n};
-  for (BatchKernel kernel : {BatchKernel::Portable, BatchKernel::Avx2, BatchKernel::Avx512}) {
+  for (BatchKernel kernel : batch_kernels) {
     if (!batch_kernel_available(kernel)) continue;
     std::vector<Status> status(n);
     std::vector<T> sep(n), nx(n), ny(n);
