@@ -152,9 +152,9 @@ template <class T>
 void penetrate_row_portable(const BatchView<T>& v, const BatchLimits<T>& lim, bool depth,
                             std::size_t row) {
   if (depth) {
-    SatOverLanes<PortableLanes<T>, true>::block(v, row, lim);
+    SatOverLanes<PortableLanes<T>, true>::template block<true>(v, row, lim);
   } else {
-    SatOverLanes<PortableLanes<T>, false>::block(v, row, lim);
+    SatOverLanes<PortableLanes<T>, false>::template block<true>(v, row, lim);
   }
 }
 

@@ -209,6 +209,38 @@ TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsOnRedoneAndInvalidR
   expect_same_bits<T>(rows, "redone and invalid rows");
 }
 
+// Runs of whole blocks without a pair apart (overlapping pairs) between runs of blocks with pairs
+// apart: the vector kernels settle a block's pairs apart with its geometry kept or computed again,
+// as the block before it turned out, and either form must give the portable bits.
+TYPED_TEST(BatchKernelsAgree, EveryKernelGivesThePortableBitsWhenBlocksAlternateBetweenKinds) {
+  using T = TypeParam;
+  constexpr std::size_t kWidest = 16;  // the widest block; narrower ones divide it
+  Rows candidates;
+  for (const RawPair& p : workloads::make_valid_pairs(InputClass::Overlapping, 600, 8)) {
+    candidates.push(p);
+  }
+  const Answers<T> depth = run(candidates.arrays<T>(), Level::Depth, BatchKernel::Portable);
+  std::vector<RawPair> overlapping;  // penetrating: no distance needed, at either level
+  for (std::size_t k = 0; k < candidates.pairs.size(); ++k) {
+    if (depth.status[k] == Status::Penetrating) overlapping.push_back(candidates.pairs[k]);
+  }
+  ASSERT_GT(overlapping.size(), 500u);
+  const auto apart = workloads::make_valid_pairs(InputClass::Mixed, 600, 9);
+  Rows rows;
+  std::size_t next_overlapping = 0, next_apart = 0;
+  for (std::size_t overlapping_blocks : {1, 2, 3}) {
+    for (std::size_t apart_blocks : {1, 2, 3}) {
+      for (std::size_t k = 0; k < overlapping_blocks * kWidest; ++k) {
+        rows.push(overlapping[next_overlapping++ % overlapping.size()]);
+      }
+      for (std::size_t k = 0; k < apart_blocks * kWidest; ++k) {
+        rows.push(apart[next_apart++ % apart.size()]);
+      }
+    }
+  }
+  expect_same_bits<T>(rows, "blocks alternating between kinds");
+}
+
 // A kernel the CPU lacks is refused with a clear error and nothing written; an available one runs.
 TEST(BatchKernelChoice, ForcingAKernelTheCpuLacksIsRefusedAndWritesNothing) {
   const RawPair p{{V2(0, 0), V2(1, 0), V2(0, 1)}, {V2(2, 0), V2(3, 0), V2(2, 1)}};

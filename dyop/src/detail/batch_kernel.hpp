@@ -275,7 +275,7 @@ struct SatOverLanes {
   // Otherwise (rare): the least of the nine vertex–vertex distances and of the eighteen
   // vertex–edge-interior ones, the latter measured along the edge's normal (as closest_on_edge
   // does) from the projections the overlaps were made of.
-  static void all_features(const Pair& p, V& dist, Vec& normal) {
+  [[gnu::always_inline]] static void all_features(const Pair& p, V& dist, Vec& normal) {
     V r[6];
     inverse_lengths(p, r);
     Vec na[3], ub[3];
@@ -328,8 +328,8 @@ struct SatOverLanes {
   }
 
   // Separation and normal of the lanes `apart`, which hold the gap and the widest-gap axis.
-  static void settle_apart(const Pair& p, const Order& widest, M apart, V r_least, T tol, V& s,
-                           Vec& axis) {
+  [[gnu::always_inline]] static void settle_apart(const Pair& p, const Order& widest, M apart,
+                                                  V r_least, T tol, V& s, Vec& axis) {
     const Vec origin = {L::splat(T(0)), L::splat(T(0))};
     const Vec a[3] = {origin, p.a1, p.a2};
     M inside[6];
@@ -353,8 +353,25 @@ struct SatOverLanes {
     axis = {L::select(left, normal.x, axis.x), L::select(left, normal.y, axis.y)};
   }
 
+  // `settle_apart` for rows [row, row + kWidth) with their geometry computed again, from the same
+  // inputs by the same operations (so to the same bits).
+  [[gnu::noinline]] static void settle_apart_again(const BatchView<T>& v, std::size_t row,
+                                                   const Order& widest, M apart, V r_least, T tol,
+                                                   V& s, Vec& axis) {
+    V in[12];
+    load(v, row, in);
+    settle_apart(geometry(in), widest, apart, r_least, tol, s, axis);
+  }
+
   // Rows [row, row + kWidth): writes their status (and at Level::Depth separation and normal);
-  // returns the lanes (bit k: row + k) to be redone by the portable path.
+  // returns the lanes (bit k: row + k) to be redone by the portable path, plus kAnyApart when some
+  // pair of the block needed its distance. kKeep: the pairs apart take the geometry computed
+  // above; otherwise `settle_apart_again` computes it a second time. Kept, its sixty-odd vectors
+  // outlive the registers and every block stores them to the stack; computed again, only the
+  // blocks with pairs apart pay, with a second geometry (docs/measurements.md).
+  static constexpr unsigned kAnyApart = 1u << 31;
+  static_assert(kWidth < 31, "kAnyApart lies above every lane's bit");
+  template <bool kKeep>
   static unsigned block(const BatchView<T>& v, std::size_t row, const BatchLimits<T>& lim) {
     V in[12];
     load(v, row, in);
@@ -420,10 +437,15 @@ struct SatOverLanes {
     V s = -least;
     // At Level::Overlap the pairs well apart need no distance.
     const M apart = kDepth ? L::either(separated, gap_in_band) : gap_in_band;
-    if (L::bits(apart) != 0) {
+    const bool any_apart = L::bits(apart) != 0;
+    if (any_apart) {
       V distance = s;
       Vec closest = axis;
-      settle_apart(p, widest, apart, r_least, tol, distance, closest);
+      if constexpr (kKeep) {
+        settle_apart(p, widest, apart, r_least, tol, distance, closest);
+      } else {
+        settle_apart_again(v, row, widest, apart, r_least, tol, distance, closest);
+      }
       separated =
           L::either(separated, L::both(gap_in_band, L::gt(distance * r_least, L::splat(tol))));
       s = L::select(separated, distance, s);
@@ -439,14 +461,21 @@ struct SatOverLanes {
       L::store(v.normal_x + row, L::select(valid, axis.x, zero));
       L::store(v.normal_y + row, L::select(valid, axis.y, zero));
     }
-    return redo;
+    return redo | (any_apart ? kAnyApart : 0u);
   }
 
-  // Every row of `v`: whole blocks, then the tail through a padded copy of its rows.
+  // Every row of `v`: whole blocks, then the tail through a padded copy of its rows. Each block
+  // keeps its geometry when the block before it had pairs apart: blocks come in runs of the kind
+  // (a broad phase's stream, a class of pairs), so that is the form the block most likely needs.
+  // The one-pair lanes always keep it: for them computing it again measured no faster.
   static void run(const BatchView<T>& v, const BatchLimits<T>& lim) {
+    constexpr bool kAlwaysKeep = kWidth == 1;
     std::size_t row = 0;
+    bool apart = kAlwaysKeep;
     for (; row + kWidth <= v.count; row += kWidth) {
-      redo_rows(v, lim, row, block(v, row, lim));
+      const unsigned redo = apart ? block<true>(v, row, lim) : block<false>(v, row, lim);
+      apart = kAlwaysKeep || (redo & kAnyApart) != 0;
+      redo_rows(v, lim, row, redo & ~kAnyApart);
     }
     if (row == v.count) return;
     const std::size_t rest = v.count - row;
@@ -469,7 +498,7 @@ struct SatOverLanes {
       tail.normal_x = out[1];
       tail.normal_y = out[2];
     }
-    const unsigned redo = block(tail, 0, lim) & ((1u << rest) - 1u);
+    const unsigned redo = block<true>(tail, 0, lim) & ((1u << rest) - 1u);
     for (std::size_t i = 0; i < rest; ++i) {
       v.status[row + i] = status[i];
       if constexpr (kDepth) {
