@@ -467,7 +467,8 @@ struct SatOverLanes {
   // Every row of `v`: whole blocks, then the tail through a padded copy of its rows. Each block
   // keeps its geometry when the block before it had pairs apart: blocks come in runs of the kind
   // (a broad phase's stream, a class of pairs), so that is the form the block most likely needs.
-  // The one-pair lanes always keep it: for them computing it again measured no faster.
+  // The one-pair lanes always keep it (why: docs/measurements.md, "The batch kernel's block in
+  // machine code").
   static void run(const BatchView<T>& v, const BatchLimits<T>& lim) {
     constexpr bool kAlwaysKeep = kWidth == 1;
     std::size_t row = 0;
