@@ -98,8 +98,8 @@ class Polygon {
 
 template <class T>
 struct PolygonOrError {
-  ConvexError error = ConvexError::None;                   ///< None when `polygon` is valid
-  Polygon<T> polygon;                                    ///< valid only when `error == None`
+  ConvexError error = ConvexError::None;                  ///< None when `polygon` is valid
+  Polygon<T> polygon;                                     ///< valid only when `error == None`
   bool ok() const { return error == ConvexError::None; }  ///< true when `error == None`
 };
 
