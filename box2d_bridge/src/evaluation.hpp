@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "convex_evaluation.hpp"
 #include "dyop/box2d.hpp"
 #include "found_masks.hpp"
 #include "installation.hpp"
@@ -47,6 +48,19 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
                 FoundMasks* masks, const ManifoldRecycling* recycling);
+
+// Writes the solver's manifold `mf` (computed in A's body frame; `b_in_a`: B's body frame given in
+// A's) as Box2D's: the reference face from the polygon's own data, points in the incident body's
+// frame, the solver's keys.
+void write_manifold(b2Manifold* manifold, const Manifold<float>& mf, const PolygonPair& pair,
+                    const b2Transform& b_in_a);
+
+// True when a world's contact `contact` (the rule on) holds no masks that hold now under the
+// setting's install and the world as it is (see evaluation.cpp); its stamp and fixture count are
+// brought up to date. `recycling`: the pose of its last answer afresh, nullptr for none.
+bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
+                   const ContactMemory& memory, FoundMasks& masks, const TriangleContact& contact,
+                   const ManifoldRecycling* recycling);
 
 // Separation of the pair along face `face` (0..2: A's edge, 3..5: B's; frames as in
 // `b_in_a`, B's body frame given in A's), with the other triangle's whole support: a lower bound
@@ -240,7 +254,8 @@ inline void evaluate(b2Manifold* manifold, const Setting& setting, const Polygon
       answer(manifold, setting, pair, b_in_a, memory, contact, masks, recycling);
       return;
     }
-    counters().polygon_pairs.add();
+    evaluate_polygons(manifold, setting, pair, memory, contact, masks);
+    return;
   }
   b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
 }
