@@ -65,6 +65,7 @@ void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const Polyg
   if (box2d_answers(setting) || memory.shapes == ContactMemory::Shapes::InvalidPolygons) {
     if (!box2d_answers(setting)) count.fallbacks.add();
     b2CollidePolygons(manifold, &p.a, p.xf_a, &p.b, p.xf_b);
+    if (manifold->pointCount > 0) count.manifolds.add();
     return;
   }
   count.exact_pairs.add();
@@ -136,6 +137,7 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
   if (box2d_answers(setting) || memory.shapes == ContactMemory::Shapes::InvalidPolygons) {
     if (!box2d_answers(setting)) count.fallbacks.add();
     b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
+    if (manifold->pointCount > 0) count.manifolds.add();
     return;
   }
   count.exact_pairs.add();
@@ -169,7 +171,7 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
   }
   const Manifold<float>& mf = r.manifold;
   if (mf.point_count == 0) return;
-  if (mf.point_count > 0) count.manifolds.add();
+  count.manifolds.add();
   // Box2D's circle manifold: A's face, its own normal and midpoint; nearest a vertex, the normal
   // from the vertex to the centre and a point of that plane.
   const int e1 = mf.reference_edge;

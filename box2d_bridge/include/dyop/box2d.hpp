@@ -305,7 +305,8 @@ struct Stats {
   /// for every backend but `Box2D`); the others by Box2D's own functions (`Backend::Box2D`,
   /// `Config::triangles_only`, or a polygon `Polygon<float>` refuses, also counted in `fallbacks`).
   std::uint64_t exact_pairs = 0;
-  /// Triangle-pair evaluations that produced a non-empty manifold.
+  /// Evaluations of the plug-in's pairs (triangle pairs, other polygon pairs, polygon–circle
+  /// pairs) that produced a non-empty manifold.
   std::uint64_t manifolds = 0;
   /// Triangle pairs the backend could not answer (`Status::Invalid`, or a triangle rejected by
   /// `Triangle<float>::make`), answered by `b2CollidePolygons` instead so that the simulation goes
