@@ -7,6 +7,7 @@
 #include "edge_data.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
+#include "recycling.hpp"
 #include "stats.hpp"
 #include "triangle_contact.hpp"
 
@@ -37,6 +38,31 @@ bool needs_masks(const Result<float>& r, float margin) {
   return !(r.status == Status::Separated && r.separation > margin);
 }
 
+// Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
+// A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
+// the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.
+void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape& a,
+                           const b2CircleShape& b, const b2Vec2& center) {
+  manifold->pointCount = mf.point_count;
+  if (mf.point_count == 0) return;
+  const int e1 = mf.reference_edge;
+  const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
+  const b2Vec2 normal(mf.normal.x(), mf.normal.y());
+  manifold->type = b2Manifold::e_faceA;
+  if (normal.x == a.m_normals[e1].x && normal.y == a.m_normals[e1].y) {
+    manifold->localNormal = a.m_normals[e1];
+    manifold->localPoint = 0.5f * (a.m_vertices[e1] + a.m_vertices[e2]);
+  } else {
+    manifold->localNormal = normal;
+    manifold->localPoint = center - (mf.points[0].separation + b.m_radius) * normal;
+  }
+  b2ManifoldPoint& mp = manifold->points[0];
+  mp.localPoint = b.m_p;
+  mp.normalImpulse = 0;
+  mp.tangentImpulse = 0;
+  mp.id.key = 0;
+}
+
 // Box2D's own answer for a pair the plug-in hands back (`Backend::Box2D`, `triangles_only`).
 bool box2d_answers(const Setting& setting) {
   return setting.backend == Backend::Box2D || setting.config.triangles_only;
@@ -58,8 +84,107 @@ float bounding_radius(const b2PolygonShape& shape) {
   return std::sqrt(sq);
 }
 
+namespace {
+
+// Where the pair is, for keeping its manifold: B's body frame in A's, B's centroid in its own
+// frame (a circle's centre), the skins and the lever of `recycle_lever`.
+struct ConvexPose {
+  b2Transform b_in_a;
+  b2Vec2 centroid_b;
+  float margin;
+  float lever;
+};
+
+// Keep: true when the world's contact keeps the manifold in `manifold` (counted).
+bool keep(const Setting& setting, const ConvexPose& pose, const b2Manifold& manifold,
+          const ManifoldRecycling* recycling, const TriangleContact* contact, FoundMasks* masks) {
+  if (!recycling || !setting.recycles() || !(recycling->slack > 0)) return false;
+  if (!keeps_manifold_at(setting, setting.config.internal_edges, pose.b_in_a, pose.centroid_b,
+                         pose.lever, *recycling, contact, masks)) {
+    return false;
+  }
+  ThreadCounters& count = counters();
+  count.recycled.add();
+  if (manifold.pointCount > 0) count.manifolds.add();
+  return true;
+}
+
+// Skip: the empty manifold, the kept pose lost (or, for the measurement floor, kept for good).
+void skip(b2Manifold* manifold, const Setting& setting, const ConvexPose& pose,
+          ManifoldRecycling* recycling) {
+  manifold->pointCount = 0;
+  if (!recycling) return;
+  if (setting.never_recompute && setting.method) {
+    recycling->remember(pose.b_in_a, pose.centroid_b, 1, setting.epoch);
+  } else {
+    recycling->lose_pose();
+  }
+}
+
+// The solver's answer `solve(query)` with the internal-edge rule: both fixtures' fixed edge data;
+// else a world's contact's own masks when they hold, found only once an answer without them is
+// not apart beyond the skins; a caller's (`memory`) as given. `circle`: B is a circle (no masks).
+template <class Solve>
+Result<float> answer_with_masks(const Setting& setting, const ConvexPose& pose,
+                                ContactMemory& memory, const TriangleContact* contact,
+                                FoundMasks* masks, const ManifoldRecycling* recycling, bool circle,
+                                ConvexQuery<float>& q, const Solve& solve) {
+  bool put_off = false;
+  if (setting.config.internal_edges) {
+    const std::optional<ShapeMasks> fixed_a =
+        contact ? fixed_polygon_edges(*contact->GetFixtureA()) : std::nullopt;
+    const std::optional<ShapeMasks> fixed_b = !fixed_a || circle
+                                                  ? std::optional<ShapeMasks>(ShapeMasks{})
+                                                  : fixed_polygon_edges(*contact->GetFixtureB());
+    if (fixed_a && fixed_b) {
+      memory.internal_edges = {fixed_a->edges, fixed_a->closed_vertices};
+      memory.masks_b = *fixed_b;
+      masks->stamp = FoundMasks::fixed_stamp;
+    } else if (contact) {
+      put_off = masks_put_off(setting, pose.b_in_a, pose.centroid_b, pose.lever, *masks, *contact,
+                              recycling);
+    }
+    if (!put_off) {
+      q.masks_a = {memory.internal_edges.edges, memory.internal_edges.closed_vertices};
+      q.masks_b = memory.masks_b;
+    }
+  }
+  Result<float> r = solve(q);
+  if (put_off && needs_masks(r, q.margin)) {
+    masks->found_now(contact->world_fixtures());
+    q.masks_a = masks_of(*contact->GetFixtureA());
+    q.masks_b = circle ? ShapeMasks{} : masks_of(*contact->GetFixtureB());
+    memory.internal_edges = {q.masks_a.edges, q.masks_a.closed_vertices};
+    memory.masks_b = q.masks_b;
+    if (q.masks_a.any() || q.masks_b.any()) r = solve(q);
+  }
+  if (q.masks_a.any() || q.masks_b.any()) counters().internal_edge_pairs.add();
+  return r;
+}
+
+// Remembers the pose of a manifold just answered: kept while the pair moves less than the
+// setting's distance (a share of it with a static body); an empty one also no farther than its
+// gap beyond what a manifold reaches (`Apart::Gap`: a lower bound on the distance, so no new
+// contact is missed; see `face_reach`).
+void remember(const Setting& setting, const ConvexPose& pose, const b2Manifold& manifold,
+              const Result<float>& r, const TriangleContact* contact,
+              ManifoldRecycling* recycling) {
+  if (!recycling || !setting.recycles()) return;
+  float slack = 1;
+  if (!setting.never_recompute) {
+    const bool static_pair = contact && contact->with_static_body();
+    const float distance = setting.config.recycle_distance * (static_pair ? static_pair_share : 1);
+    const float gap = r.status == Status::Separated ? r.separation - face_reach(pose.margin) : 0;
+    slack = manifold.pointCount > 0 ? distance : std::max(0.0f, std::min(distance, gap));
+  }
+  recycling->remember(pose.b_in_a, pose.centroid_b, slack, setting.epoch);
+}
+
+}  // namespace
+
 void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const PolygonPair& p,
-                       ContactMemory& memory, const TriangleContact* contact, FoundMasks* masks) {
+                       ContactMemory& memory, const TriangleContact* contact, FoundMasks* masks,
+                       ManifoldRecycling* recycling) {
   ThreadCounters& count = counters();
   count.polygon_pairs.add();
   if (box2d_answers(setting) || memory.shapes == ContactMemory::Shapes::InvalidPolygons) {
@@ -70,57 +195,34 @@ void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const Polyg
   }
   count.exact_pairs.add();
   const float margin = p.a.m_radius + p.b.m_radius;  // the skins: speculative, as Box2D's
-  const b2Transform b_in_a = b2MulT(p.xf_a, p.xf_b);
-  if (setting.config.bounds_early_out && circles_apart(p.a, p.b, b_in_a, memory, reach(margin))) {
-    manifold->pointCount = 0;
-    return;
+  const ConvexPose pose{b2MulT(p.xf_a, p.xf_b), p.b.m_centroid, margin,
+                        recycle_lever(memory.radius_sum, margin)};
+  if (keep(setting, pose, *manifold, recycling, contact, masks)) return;
+  if (setting.config.bounds_early_out &&
+      circles_apart(p.a, p.b, pose.b_in_a, memory, reach(margin))) {
+    return skip(manifold, setting, pose, recycling);
   }
   const Polygon<float> a = placed(p.a);
-  const Polygon<float> b = placed(p.b, &b_in_a);
+  const Polygon<float> b = placed(p.b, &pose.b_in_a);
   ConvexQuery<float> q;
   q.level = Level::Manifold;
   q.margin = margin;
   q.face_hysteresis = face_hysteresis;
   q.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   q.witnesses = false;   // Box2D's solver reads the manifold alone
-  // The masks: both fixtures' fixed edge data; else a world's contact's own when they hold, found
-  // only once an answer without them is not apart beyond the skins; a caller's as given.
-  bool put_off = false;
-  if (setting.config.internal_edges) {
-    const std::optional<ShapeMasks> fixed_a =
-        contact ? fixed_polygon_edges(*contact->GetFixtureA()) : std::nullopt;
-    const std::optional<ShapeMasks> fixed_b =
-        fixed_a ? fixed_polygon_edges(*contact->GetFixtureB()) : std::nullopt;
-    if (fixed_a && fixed_b) {
-      memory.internal_edges = {fixed_a->edges, fixed_a->closed_vertices};
-      memory.masks_b = *fixed_b;
-      masks->stamp = FoundMasks::fixed_stamp;
-    } else {
-      put_off = contact && masks_put_off(setting, p, b_in_a, memory, *masks, *contact, nullptr);
-    }
-    if (!put_off) {
-      q.masks_a = {memory.internal_edges.edges, memory.internal_edges.closed_vertices};
-      q.masks_b = memory.masks_b;
-    }
-  }
-  Result<float> r = collide(a, b, q);
-  if (put_off && needs_masks(r, margin)) {
-    masks->found_now(contact->world_fixtures());
-    q.masks_a = masks_of(*contact->GetFixtureA());
-    q.masks_b = masks_of(*contact->GetFixtureB());
-    memory.internal_edges = {q.masks_a.edges, q.masks_a.closed_vertices};
-    memory.masks_b = q.masks_b;
-    if (q.masks_a.any() || q.masks_b.any()) r = collide(a, b, q);
-  }
-  if (q.masks_a.any() || q.masks_b.any()) count.internal_edge_pairs.add();
+  const Result<float> r =
+      answer_with_masks(setting, pose, memory, contact, masks, recycling, false, q,
+                        [&](const ConvexQuery<float>& query) { return collide(a, b, query); });
   if (r.manifold.point_count > 0) count.manifolds.add();
-  write_manifold(manifold, r.manifold, p, b_in_a);
+  write_manifold(manifold, r.manifold, p, pose.b_in_a);
+  remember(setting, pose, *manifold, r, contact, recycling);
 }
 
 void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const b2PolygonShape& a,
                              const b2Transform& xf_a, const b2CircleShape& b,
                              const b2Transform& xf_b, ContactMemory& memory,
-                             const TriangleContact* contact) {
+                             const TriangleContact* contact, FoundMasks* masks,
+                             ManifoldRecycling* recycling) {
   if (!setting.backend) {
     b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
     return;
@@ -141,15 +243,17 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
     return;
   }
   count.exact_pairs.add();
-  // The circle's centre in A's body frame: the pair is computed there (the skin of the polygon is
-  // the margin, as `b2CollidePolygonAndCircle` keeps a point up to the sum of the two radii).
-  const b2Vec2 center = b2MulT(xf_a, b2Mul(xf_b, b.m_p));
+  // The pair is computed in A's body frame; the polygon's skin is the margin, as
+  // `b2CollidePolygonAndCircle` keeps a point up to the sum of the two radii.
   const float margin = a.m_radius;
-  manifold->pointCount = 0;
+  const ConvexPose pose{b2MulT(xf_a, xf_b), b.m_p, margin,
+                        recycle_lever(memory.radius_sum, margin)};
+  if (keep(setting, pose, *manifold, recycling, contact, masks)) return;
+  const b2Vec2 center = b2Mul(pose.b_in_a, b.m_p);
   const float reach_sum = memory.radius_sum + reach(margin);
   if (setting.config.bounds_early_out &&
       (center - a.m_centroid).LengthSquared() > reach_sum * reach_sum) {
-    return;
+    return skip(manifold, setting, pose, recycling);
   }
   const Polygon<float> pa = placed(a);
   const Circle<float> circle{{center.x, center.y}, b.m_radius};
@@ -158,39 +262,12 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
   q.margin = margin;
   q.apart = Apart::Gap;
   q.witnesses = false;
-  Result<float> r = collide(pa, circle, q);
-  if (setting.config.internal_edges && contact && needs_masks(r, margin)) {
-    q.masks_a = masks_of(*contact->GetFixtureA());
-    if (q.masks_a.any()) {
-      count.internal_edge_pairs.add();
-      r = collide(pa, circle, q);
-    }
-  } else if (setting.config.internal_edges && !contact) {
-    q.masks_a = {memory.internal_edges.edges, memory.internal_edges.closed_vertices};
-    if (q.masks_a.any()) r = collide(pa, circle, q);
-  }
-  const Manifold<float>& mf = r.manifold;
-  if (mf.point_count == 0) return;
-  count.manifolds.add();
-  // Box2D's circle manifold: A's face, its own normal and midpoint; nearest a vertex, the normal
-  // from the vertex to the centre and a point of that plane.
-  const int e1 = mf.reference_edge;
-  const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
-  const b2Vec2 normal(mf.normal.x(), mf.normal.y());
-  manifold->type = b2Manifold::e_faceA;
-  if (normal.x == a.m_normals[e1].x && normal.y == a.m_normals[e1].y) {
-    manifold->localNormal = a.m_normals[e1];
-    manifold->localPoint = 0.5f * (a.m_vertices[e1] + a.m_vertices[e2]);
-  } else {
-    manifold->localNormal = normal;
-    manifold->localPoint = center - (mf.points[0].separation + b.m_radius) * normal;
-  }
-  manifold->pointCount = 1;
-  b2ManifoldPoint& mp = manifold->points[0];
-  mp.localPoint = b.m_p;
-  mp.normalImpulse = 0;
-  mp.tangentImpulse = 0;
-  mp.id.key = 0;
+  const Result<float> r = answer_with_masks(
+      setting, pose, memory, contact, masks, recycling, true, q,
+      [&](const ConvexQuery<float>& query) { return collide(pa, circle, query); });
+  write_circle_manifold(manifold, r.manifold, a, b, center);
+  if (manifold->pointCount > 0) count.manifolds.add();
+  remember(setting, pose, *manifold, r, contact, recycling);
 }
 
 }  // namespace dyop::box2d::detail

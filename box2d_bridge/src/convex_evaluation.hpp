@@ -12,6 +12,7 @@
 #include "found_masks.hpp"
 #include "installation.hpp"
 #include "polygon_pair.hpp"
+#include "recycling.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -30,16 +31,19 @@ bool valid_polygon(const b2PolygonShape& shape);
 float bounding_radius(const b2PolygonShape& shape);
 
 // Two polygons, one of more than 3 vertices (`ContactMemory::Shapes::Polygons` or
-// `InvalidPolygons`), under an install. `contact`: the world's contact (its masks' record in
-// `masks`), nullptr for `collide_polygons` (the masks as the caller set them in `memory`).
+// `InvalidPolygons`), under an install: keep, skip or answer, as for triangle pairs. `contact`:
+// the world's contact (its masks' record in `masks`, its kept pose in `recycling`), nullptr for
+// `collide_polygons` (the masks as the caller set them in `memory`; nothing kept).
 void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
-                       ContactMemory& memory, const TriangleContact* contact, FoundMasks* masks);
+                       ContactMemory& memory, const TriangleContact* contact, FoundMasks* masks,
+                       ManifoldRecycling* recycling);
 
 // Polygon `a` (fixture A) and circle `b` (fixture B), in Box2D's registry order; uninstalled:
-// Box2D's own `b2CollidePolygonAndCircle`, uncounted. `contact` as above.
+// Box2D's own `b2CollidePolygonAndCircle`, uncounted. The rest as above.
 void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const b2PolygonShape& a,
                              const b2Transform& xf_a, const b2CircleShape& b,
                              const b2Transform& xf_b, ContactMemory& memory,
-                             const TriangleContact* contact);
+                             const TriangleContact* contact, FoundMasks* masks,
+                             ManifoldRecycling* recycling);
 
 }  // namespace dyop::box2d::detail

@@ -50,8 +50,8 @@ bool needs_masks(const Result<float>& r, float margin) {
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
 // contacts a broad phase makes never come within the margin, and finding a static triangle's
 // masks costs a query of the world's broad phase and the covering tests.
-bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
-                   const ContactMemory& memory, FoundMasks& masks, const TriangleContact& contact,
+bool masks_put_off(const Setting& setting, const b2Transform& b_in_a, const b2Vec2& centroid_b,
+                   float lever, FoundMasks& masks, const TriangleContact& contact,
                    const ManifoldRecycling* recycling) {
   const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
   if (masks.stamp != stamp) {
@@ -64,9 +64,8 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
       // Since the last answer afresh, which had not seen the count move or followed the motion
       // already: every evaluation in between kept its manifold (within the recycling distance of
       // that pose) or was a skip (then the motion is infinite).
-      const float lever = recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius);
-      masks.motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid, lever, setting.epoch)
-                                : HUGE_VALF;
+      masks.motion +=
+          recycling ? recycling->motion(b_in_a, centroid_b, lever, setting.epoch) : HUGE_VALF;
       if (!masks_hold(masks, setting.config.recycle_distance)) {
         masks.motion = FoundMasks::not_found;
       }
@@ -113,8 +112,10 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
       memory.internal_edges = *fixed;
       masks->stamp = FoundMasks::fixed_stamp;
     } else {
-      put_off =
-          contact && masks_put_off(setting, pair, b_in_a, memory, *masks, *contact, recycling);
+      put_off = contact &&
+                masks_put_off(setting, b_in_a, pair.b.m_centroid,
+                              recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius),
+                              *masks, *contact, recycling);
     }
     if (!put_off) query.internal_edges = memory.internal_edges;
   }
@@ -180,7 +181,7 @@ void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
                                 ContactMemory* memory, const Config& config) {
   ContactMemory cold;
   detail::evaluate_polygon_circle(manifold, detail::Setting(backend, config, 0), polygon, xf_a,
-                                  circle, xf_b, memory ? *memory : cold, nullptr);
+                                  circle, xf_b, memory ? *memory : cold, nullptr, nullptr, nullptr);
 }
 
 }  // namespace dyop::box2d

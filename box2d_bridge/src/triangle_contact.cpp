@@ -230,6 +230,8 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
 
 [[gnu::noinline]] void TriangleContact::keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a,
                                                       const b2Transform& xf_b) {
+  // Pairs beyond two triangles keep theirs on their own path (convex_evaluation.cpp).
+  if (beyond_triangles(memory_)) return evaluate_cold(manifold, xf_a, xf_b);
   if (detail::keep(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this,
                    &masks_)) {
     return;
@@ -270,9 +272,10 @@ void TriangleContact::evaluate_with(b2Manifold* manifold, const Setting& setting
                                     ContactMemory& memory, FoundMasks* masks,
                                     ManifoldRecycling* recycling) const {
   if (m_fixtureB->GetType() == b2Shape::e_circle) {
-    evaluate_polygon_circle(
-        manifold, setting, *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
-        *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b, memory, this);
+    evaluate_polygon_circle(manifold, setting,
+                            *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
+                            *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b,
+                            memory, this, masks, recycling);
     return;
   }
   evaluate(manifold, setting, pair(xf_a, xf_b), memory, this, masks, recycling);

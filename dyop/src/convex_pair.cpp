@@ -446,7 +446,9 @@ CenterPlace<T> place_center(const Polygon<T>& p, const Local<T>& v, const Vec2<T
     } else {
       out.index = end ? p.next(e) : e;
       out.signed_distance = std::sqrt(sq);
-      out.normal = (c - on) / out.signed_distance;
+      // A centre on the vertex itself (its face's line rounded it outside) has no direction of
+      // its own: the face's normal, a direction of the vertex's normal cone.
+      out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(out.best_face);
     }
   }
   return out;
