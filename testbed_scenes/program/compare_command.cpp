@@ -11,6 +11,7 @@
 #include "program/commands.hpp"
 #include "report/compare_report.hpp"
 #include "report/compare_section.hpp"
+#include "report/compare_summary.hpp"
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "report/report_directory.hpp"
@@ -38,6 +39,8 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     err << "dyop compare: " << e.what() << '\n';
     return exit_io_error;
   }
+  for (const std::string& line : summary_lines(comparison)) out << line << '\n';
+  out << '\n';
   write_compare_table(comparison.main, out);
   for (const auto& section : comparison.sections) {
     if (section->measured()) section->write_tables(out);

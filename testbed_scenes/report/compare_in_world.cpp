@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 #include "experiments/progress.hpp"
@@ -153,6 +154,14 @@ void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const
 
 std::string InWorldSection::files() const {
   return "`inworld.csv` (every scene and backend against Box2D's own contact)";
+}
+
+void InWorldSection::summarize(SummaryFigures& figures) const {
+  for (const InWorldRatio& r : rows_) {
+    if (r.backend == box2d::Backend::Dyop) {
+      figures.wall_times.push_back({r.scene, r.narrowphase_ratio(), r.step_ratio()});
+    }
+  }
 }
 
 }  // namespace dyop::report

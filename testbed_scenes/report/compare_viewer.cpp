@@ -8,6 +8,7 @@
 
 #include "experiments/lockstep_recording.hpp"
 #include "report/compare_section.hpp"
+#include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/viewer_page.hpp"
 
@@ -96,6 +97,8 @@ class ViewerSection : public CompareSection {
   std::string files() const override {
     return "`view_<scene>.html` (viewer pages: Box2D's own contact against dyop)";
   }
+
+  void summarize(SummaryFigures& figures) const override { figures.viewer_pages = true; }
 
  private:
   std::string out_dir_;
