@@ -57,6 +57,7 @@ void InWorldSection::run(const SectionContext& c) {
   const int reps = experiments::in_world_repetitions(c.options.quick);
   for (const scenes::SceneInfo* s : c.scenes) {
     if (std::string(s->name) == "paper") continue;  // no Box2D world
+    if (c.options.quick && experiments::left_out_of_quick_sections(s->name)) continue;
     const int steps = c.steps(*s);
     for (box2d::Backend b : experiments::in_world_backends(c.options.quick)) {
       const double start = c.elapsed();

@@ -66,6 +66,9 @@ class CompareSection {
   /// Its files for `report.md`'s file list, e.g. "`slide.csv` (every slider under every
   /// runner)".
   virtual std::string files() const = 0;
+  /// True when `--quick` runs it without being named by `--section` (the main command's run is
+  /// kept to seconds; the full run has every section).
+  virtual bool in_quick_run() const { return true; }
   /// Its lines of `report.md`'s Problems list (none by default).
   virtual void problems(std::vector<std::string>& lines) const { (void)lines; }
   /// Its figures for the summary the command opens with (none by default).
