@@ -40,17 +40,17 @@ struct Frame {
   Vec2<T> axis(int k) const { return of_a(k) ? pa.normal(k) : Vec2<T>(-pb.normal(edge(k))); }
 };
 
-// The least of `n·v[i]` over `count` vertices, and the first vertex that realises it.
+// The least of `n·v[i]` over `count` vertices, and the first vertex that realises it. Selected,
+// not branched on: which vertex is deepest does not predict (as `detail::min3` for triangles).
 template <class T>
 T least_along(const Vec2<T>& n, const Local<T>& v, int count, int& deep) {
   T least = n.dot(v[0]);
   deep = 0;
   for (int i = 1; i < count; ++i) {
     const T d = n.dot(v[i]);
-    if (d < least) {
-      least = d;
-      deep = i;
-    }
+    const bool less = d < least;
+    least = std::min(least, d);
+    deep = detail::select_index(less, i, deep);
   }
   return least;
 }
@@ -83,8 +83,11 @@ struct Overlaps {
   // The least of axes [from, to) whose bit is set in `mask` (first on ties); −1: none.
   int least_in(int from, int to, unsigned mask) const {
     int best = -1;
+    T least = 0;
     for (int k = from; k < to; ++k) {
-      if (((mask >> k) & 1u) != 0 && (best < 0 || axis[k].overlap < axis[best].overlap)) best = k;
+      const bool take = ((mask >> k) & 1u) != 0 && (best < 0 || axis[k].overlap < least);
+      least = take ? axis[k].overlap : least;
+      best = detail::select_index(take, k, best);
     }
     return best;
   }
@@ -235,10 +238,8 @@ void clip_manifold(const Frame<T>& f, int k, T margin, Manifold<T>& m) {
   T most = n.dot(ip.normal(0));
   for (int j = 1; j < ip.count(); ++j) {
     const T d = n.dot(ip.normal(j));
-    if (d < most) {
-      most = d;
-      inc = j;
-    }
+    inc = detail::select_index(d < most, j, inc);
+    most = std::min(most, d);
   }
   m.incident_edge = static_cast<std::uint8_t>(ip.input_edge(inc));
 
@@ -263,11 +264,13 @@ void clip_manifold(const Frame<T>& f, int k, T margin, Manifold<T>& m) {
     const bool cut = ends[end].side != ClipSide::None;
     const Vec2<T> p = cut ? Vec2<T>(p0 + ends[end].along * (p1 - p0)) : *vertex_point[end];
     const T separation = n.dot(p) - front;
-    if (separation > margin) continue;
-    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count++)];
+    // Written into the next slot whether kept or not, counted only when within the margin (as
+    // `detail::clip_manifold`: whether an end lies beyond it does not predict).
+    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
     out.point = p + f.origin;
     out.separation = separation;
     out.key = keys.key(end, ends[end].side);
+    m.point_count += static_cast<int>(separation <= margin);
   }
 }
 
@@ -411,46 +414,37 @@ struct CenterPlace {
   T signed_distance = 0;
 };
 
+// The nearest point lies on the face the centre lies farthest beyond (for a strictly convex
+// polygon and a centre outside it: were it a vertex of another face, one of that vertex's two
+// faces would lie farther, its normal being nearer the direction from the vertex to the centre),
+// so that face alone is searched, as `b2CollidePolygonAndCircle` does.
 template <class T>
 CenterPlace<T> place_center(const Polygon<T>& p, const Local<T>& v, const Vec2<T>& c) {
   CenterPlace<T> out;
   T farthest = p.normal(0).dot(c - v[0]);
   for (int e = 1; e < p.count(); ++e) {
     const T s = p.normal(e).dot(c - v[e]);
-    if (s > farthest) {
-      farthest = s;
-      out.best_face = e;
-    }
+    out.best_face = detail::select_index(s > farthest, e, out.best_face);
+    farthest = std::max(farthest, s);
   }
-  out.index = out.best_face;
-  out.normal = p.normal(out.best_face);
+  const int e = out.best_face;
+  out.index = e;
+  out.normal = p.normal(e);
   out.signed_distance = farthest;
   out.nearest = c - farthest * out.normal;
   if (farthest <= 0) return out;  // inside: the nearest face line
-  // Outside: the nearest point over every segment (a face's interior keeps its own normal and
-  // its line's distance, the product with the most accurate digits).
-  T best_sq = -1;
-  for (int e = 0; e < p.count(); ++e) {
-    Feature::Type type;
-    int end;
-    const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
-    const T sq = (c - on).squaredNorm();
-    if (best_sq >= 0 && !(sq < best_sq)) continue;
-    best_sq = sq;
-    out.type = type;
-    out.nearest = on;
-    if (type == Feature::Type::Edge) {
-      out.index = e;
-      out.normal = p.normal(e);
-      out.signed_distance = p.normal(e).dot(c - v[e]);
-    } else {
-      out.index = end ? p.next(e) : e;
-      out.signed_distance = std::sqrt(sq);
-      // A centre on the vertex itself (its face's line rounded it outside) has no direction of
-      // its own: the face's normal, a direction of the vertex's normal cone.
-      out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(out.best_face);
-    }
-  }
+  Feature::Type type;
+  int end;
+  const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
+  if (type == Feature::Type::Edge) return out;  // the face's interior: its normal, its distance
+  const T sq = (c - on).squaredNorm();
+  out.type = type;
+  out.nearest = on;
+  out.index = end ? p.next(e) : e;
+  out.signed_distance = std::sqrt(sq);
+  // A centre on the vertex itself (its face's line rounded it outside) has no direction of its
+  // own: the face's normal, a direction of the vertex's normal cone.
+  out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(e);
   return out;
 }
 
