@@ -68,6 +68,35 @@ bool box2d_answers(const Setting& setting) {
   return setting.backend == Backend::Box2D || setting.config.triangles_only;
 }
 
+// The least of `n·v` over a polygon's vertices.
+float least_along(const b2Vec2& n, const b2PolygonShape& shape) {
+  float least = b2Dot(n, shape.m_vertices[0]);
+  for (int i = 1; i < shape.m_count; ++i) least = std::min(least, b2Dot(n, shape.m_vertices[i]));
+  return least;
+}
+
+// Separation of two polygons along face `face` (A's edge `face`, or B's edge `face − count of A`;
+// `b_in_a`: B's body frame given in A's), with the other polygon's whole support: a lower bound
+// on their distance (as `face_separation` for triangles). The face's normal is rotated into the
+// other body's frame, so the other's vertices are used as its shape holds them.
+float polygon_face_separation(int face, const b2PolygonShape& a, const b2PolygonShape& b,
+                              const b2Transform& b_in_a) {
+  if (face < a.m_count) {
+    const b2Vec2& n = a.m_normals[face];
+    return least_along(b2MulT(b_in_a.q, n), b) + b2Dot(n, b_in_a.p - a.m_vertices[face]);
+  }
+  const int e = face - a.m_count;
+  const b2Vec2& n = b.m_normals[e];
+  const b2Vec2 m = b2Mul(b_in_a.q, n);
+  return least_along(m, a) - b2Dot(m, b_in_a.p) - b2Dot(n, b.m_vertices[e]);
+}
+
+// The face the solver judged the pair on (`ContactMemory::last_face`, as for triangles: A's
+// edges first, then B's).
+std::int8_t judged_face(const Manifold<float>& m, int count_a) {
+  return static_cast<std::int8_t>(m.reference_edge + (m.reference_is_a ? 0 : count_a));
+}
+
 }  // namespace
 
 bool valid_polygon(const b2PolygonShape& shape) {
@@ -202,6 +231,10 @@ void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const Polyg
       circles_apart(p.a, p.b, pose.b_in_a, memory, reach(margin))) {
     return skip(manifold, setting, pose, recycling);
   }
+  if (setting.config.warm_axis && memory.last_face >= 0 &&
+      polygon_face_separation(memory.last_face, p.a, p.b, pose.b_in_a) > face_reach(margin)) {
+    return skip(manifold, setting, pose, recycling);
+  }
   const Polygon<float> a = placed(p.a);
   const Polygon<float> b = placed(p.b, &pose.b_in_a);
   ConvexQuery<float> q;
@@ -214,6 +247,7 @@ void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const Polyg
       answer_with_masks(setting, pose, memory, contact, masks, recycling, false, q,
                         [&](const ConvexQuery<float>& query) { return collide(a, b, query); });
   if (r.manifold.point_count > 0) count.manifolds.add();
+  memory.last_face = judged_face(r.manifold, p.a.m_count);
   write_manifold(manifold, r.manifold, p, pose.b_in_a);
   remember(setting, pose, *manifold, r, contact, recycling);
 }
@@ -255,6 +289,12 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
       (center - a.m_centroid).LengthSquared() > reach_sum * reach_sum) {
     return skip(manifold, setting, pose, recycling);
   }
+  // The circle beyond the line of the face it was judged on: apart at least that far.
+  if (setting.config.warm_axis && memory.last_face >= 0 &&
+      b2Dot(a.m_normals[memory.last_face], center - a.m_vertices[memory.last_face]) - b.m_radius >
+          face_reach(margin)) {
+    return skip(manifold, setting, pose, recycling);
+  }
   const Polygon<float> pa = placed(a);
   const Circle<float> circle{{center.x, center.y}, b.m_radius};
   ConvexQuery<float> q;
@@ -265,6 +305,7 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
   const Result<float> r = answer_with_masks(
       setting, pose, memory, contact, masks, recycling, true, q,
       [&](const ConvexQuery<float>& query) { return collide(pa, circle, query); });
+  memory.last_face = judged_face(r.manifold, a.m_count);
   write_circle_manifold(manifold, r.manifold, a, b, center);
   if (manifold->pointCount > 0) count.manifolds.add();
   remember(setting, pose, *manifold, r, contact, recycling);
