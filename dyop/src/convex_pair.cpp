@@ -55,8 +55,31 @@ T least_along(const Vec2<T>& n, const Local<T>& v, int count, int& deep) {
   return least;
 }
 
+// The least of `n·v[i]` over `count` vertices, without the vertex.
+template <class T>
+T least_value(const Vec2<T>& n, const Local<T>& v, int count) {
+  T least = n.dot(v[0]);
+  for (int i = 1; i < count; ++i) least = std::min(least, n.dot(v[i]));
+  return least;
+}
+
+// Axis k's overlap with the other shape's deepest vertex (first on ties): what the Contact level
+// and the rule's closed vertices read.
+template <class T>
+AxisOverlap<T> overlap_on_axis(const Frame<T>& f, int k) {
+  const bool own_a = f.of_a(k);
+  const int e = f.edge(k);
+  const Vec2<T>& n = own_a ? f.pa.normal(e) : f.pb.normal(e);
+  AxisOverlap<T> o;
+  o.axis = k;
+  o.overlap = n.dot((own_a ? f.a : f.b)[e]) -
+              least_along(n, own_a ? f.b : f.a, own_a ? f.pb.count() : f.pa.count(), o.deep);
+  return o;
+}
+
 // Every axis's overlap (`AxisOverlap`: max over the face's shape minus min over the other's along
-// the face normal; negative: apart along it) with the other shape's deepest vertex.
+// the face normal; negative: apart along it). The deepest vertices are left out (`deep` 0): most
+// pairs need them for one axis at most (`overlap_on_axis`).
 template <class T>
 struct Overlaps {
   std::array<AxisOverlap<T>, 2 * max_polygon_vertices> axis;
@@ -73,8 +96,7 @@ struct Overlaps {
       const Local<T>& other = own_a ? f.b : f.a;
       AxisOverlap<T>& o = axis[static_cast<std::size_t>(k)];
       o.axis = k;
-      o.overlap =
-          n.dot(own[e]) - least_along(n, other, own_a ? f.pb.count() : f.pa.count(), o.deep);
+      o.overlap = n.dot(own[e]) - least_value(n, other, own_a ? f.pb.count() : f.pa.count());
     }
     best_a = least_in(0, f.pa.count(), ~0u);
     best_b = least_in(f.pa.count(), f.axes(), ~0u);
@@ -277,14 +299,17 @@ void clip_manifold(const Frame<T>& f, int k, T margin, Manifold<T>& m) {
 // True when axis k is allowed by the masks: its edge not internal, its deepest vertex (of the
 // other shape) not closed.
 template <class T>
-bool axis_allowed(const Frame<T>& f, const ConvexQuery<T>& q, const AxisOverlap<T>& ax) {
-  const bool own_a = f.of_a(ax.axis);
+bool axis_allowed(const Frame<T>& f, const ConvexQuery<T>& q, int k) {
+  const bool own_a = f.of_a(k);
   const Polygon<T>& own = own_a ? f.pa : f.pb;
   const Polygon<T>& other = own_a ? f.pb : f.pa;
   const ShapeMasks& own_masks = own_a ? q.masks_a : q.masks_b;
   const ShapeMasks& other_masks = own_a ? q.masks_b : q.masks_a;
-  return ((own_masks.edges >> own.input_edge(f.edge(ax.axis))) & 1) == 0 &&
-         ((other_masks.closed_vertices >> other.input_vertex(ax.deep)) & 1) == 0;
+  if (((own_masks.edges >> own.input_edge(f.edge(k))) & 1) != 0) return false;
+  // The deep vertex is looked for only when the other shape has closed vertices at all.
+  if (other_masks.closed_vertices == 0) return true;
+  const int deep = overlap_on_axis(f, k).deep;
+  return ((other_masks.closed_vertices >> other.input_vertex(deep)) & 1) == 0;
 }
 
 // What one shape's edges say to the rule (bits by CCW edge), as `detail::edge_bits` for triangles.
@@ -331,7 +356,7 @@ UsableAxes<T> usable_axes(const Frame<T>& f, const ConvexQuery<T>& q, const Over
   const int na = f.pa.count();
   unsigned allowed = 0;
   for (int k = 0; k < f.axes(); ++k) {
-    allowed |= static_cast<unsigned>(axis_allowed(f, q, o.axis[k])) << k;
+    allowed |= static_cast<unsigned>(axis_allowed(f, q, k)) << k;
   }
   const EdgeBits a = edge_bits(f.pa, f.a, f.pb, f.b, reach);
   const EdgeBits b = edge_bits(f.pb, f.b, f.pa, f.a, reach);
@@ -363,8 +388,7 @@ Result<T> collide(const Polygon<T>& pa, const Polygon<T>& pb, const ConvexQuery<
   bool no_usable_axis = false;
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
   if ((q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
-      !(axis_allowed(f, q, least) &&
-        (reference == o.least || axis_allowed(f, q, o.axis[reference])))) {
+      !(axis_allowed(f, q, o.least) && (reference == o.least || axis_allowed(f, q, reference)))) {
     const UsableAxes<T> u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
     if (u.any()) {
@@ -389,7 +413,9 @@ Result<T> collide(const Polygon<T>& pa, const Polygon<T>& pb, const ConvexQuery<
     fill_apart(f, q, least, in_band ? &near : nullptr, r);
   } else {
     const Level level = q.level == Level::Manifold && !q.witnesses ? Level::Depth : q.level;
-    fill_from_axis(f, level, o.axis[answer_axis], r);
+    fill_from_axis(f, level,
+                   level >= Level::Contact ? overlap_on_axis(f, answer_axis) : o.axis[answer_axis],
+                   r);
   }
   if (q.level != Level::Manifold) return r;
   if (no_usable_axis || -o.axis[reference].overlap > q.margin) {
