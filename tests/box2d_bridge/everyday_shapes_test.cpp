@@ -49,7 +49,7 @@ const char* name(ShapeBody b) {
     case ShapeBody::Box:
       return "SetAsBox box";
     case ShapeBody::Hexagon:
-      return "hexagon";
+      return "hexagon r = 0.5 m";
     case ShapeBody::Ball:
       return "circle r = 0.3 m";
   }
@@ -119,7 +119,7 @@ b2Body* add_shape_glider(World& world, ShapeBody kind) {
       b2Vec2 points[6];
       for (int i = 0; i < 6; ++i) {
         const float a = 3.14159265f / 3 * i;
-        points[i] = b2Vec2(0.3f * std::cos(a), 0.3f * std::sin(a) + 0.3f * std::sqrt(0.75f));
+        points[i] = b2Vec2(0.5f * std::cos(a), 0.5f * std::sin(a) + 0.5f * std::sqrt(0.75f));
       }
       polygon.Set(points, 6);
       def.shape = &polygon;
