@@ -326,11 +326,13 @@ void evaluate_polygon_circle(b2Manifold* manifold, const Setting& setting, const
   q.margin = margin;
   q.apart = Apart::Gap;
   q.witnesses = false;
-  const Result<float> r =
-      answer_with_masks(setting, pose, memory, contact, masks, recycling, true, q,
-                        [&](const ConvexQuery<float>& query) {
-                          return dyop::detail::collide_polygon_circle(pa, circle, query);
-                        });
+  // The solver inlined into this evaluation (as a call, twice as `answer_with_masks` has it, the
+  // answer went through memory: measured 66 → 59 ns a pair with `place_center` inlined too).
+  const Result<float> r = answer_with_masks(
+      setting, pose, memory, contact, masks, recycling, true,
+      q, [&](const ConvexQuery<float>& query) __attribute__((always_inline)) {
+        return dyop::detail::collide_polygon_circle(pa, circle, query);
+      });
   memory.last_face = judged_face(r.manifold, a.m_count);
   write_circle_manifold(manifold, r.manifold, a, b, center);
   if (manifold->pointCount > 0) count.manifolds.add();

@@ -55,7 +55,8 @@ struct CenterPlace {
 // faces would lie farther, its normal being nearer the direction from the vertex to the centre),
 // so that face alone is searched, as `b2CollidePolygonAndCircle` does.
 template <class T, class P>
-CenterPlace<T> place_center(const P& p, const Local<T>& v, const Vec2<T>& c) {
+[[gnu::always_inline]] inline CenterPlace<T> place_center(const P& p, const Local<T>& v,
+                                                          const Vec2<T>& c) {
   CenterPlace<T> out;
   T farthest = p.normal(0).dot(c - v[0]);
   for (int e = 1; e < p.count(); ++e) {
