@@ -80,8 +80,9 @@ struct SceneMetrics {
   /// Every contact update in the measured steps, whatever the shapes (= `triangle_pairs` but in
   /// `mixed`, where circles, boxes and edges have contacts of their own).
   std::uint64_t contact_updates = 0;
-  /// Box2D scenes: triangle pairs the plug-in evaluated in all (`stats()`), step 1 and the
-  /// re-evaluations of Box2D's time-of-impact sub-steps included. None for `paper`.
+  /// Box2D scenes: pairs the plug-in's contacts evaluated in all (`stats()`: triangle pairs, other
+  /// polygon pairs, polygon–circle pairs), step 1 and the re-evaluations of Box2D's
+  /// time-of-impact sub-steps included. None for `paper`.
   std::optional<std::uint64_t> plugin_evaluations;
   /// Box2D scenes: pairs the backend could not answer, answered by Box2D instead (`stats()`);
   /// 0 means every triangle pair was the backend's. None for `paper`.
@@ -93,7 +94,7 @@ struct SceneMetrics {
   /// (index: `static_cast<int>(box2d::Skip)`), over the whole run like `plugin_evaluations`, of
   /// which they are a part (`stats().skipped`). None for `paper`.
   std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
-  /// Box2D scenes: triangle-pair evaluations that kept the contact's manifold
+  /// Box2D scenes: evaluations that kept the contact's manifold
   /// (`box2d::Config::recycle_distance`, in `skip_config`), over the whole run, of
   /// `plugin_evaluations` (`stats().recycled`). None for `paper`.
   std::optional<std::uint64_t> recycled;

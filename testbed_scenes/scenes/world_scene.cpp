@@ -135,7 +135,7 @@ SceneMetrics WorldScene::metrics() const {
   m.contact_updates = updates_.contacts;
   if (runner_) {  // the plug-in's counters mean nothing when Box2D's own contact answers
     const box2d::Stats s = box2d::stats();
-    m.plugin_evaluations = s.triangles(*runner_);
+    m.plugin_evaluations = s.triangles(*runner_) + s.polygon_pairs + s.circle_pairs;
     m.fallbacks = s.fallbacks;
     m.skip_config = skips_;
     m.skips = s.skipped;
