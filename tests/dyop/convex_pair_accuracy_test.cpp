@@ -342,6 +342,66 @@ TEST(ConvexPairRegression, CircleCentredOnAVertexGetsAUnitNormal) {
   EXPECT_TRUE(r.manifold.points[0].point.allFinite());
 }
 
+// The distance from `c` to the segment from `p` to `q` (double: only to tell whether a circle
+// clearly reaches an edge).
+double segment_distance(const Vec2<double>& c, const Vec2<double>& p, const Vec2<double>& q) {
+  const Vec2<double> e = q - p;
+  const double t = std::clamp((c - p).dot(e) / e.squaredNorm(), 0.0, 1.0);
+  return (c - (p + t * e)).norm();
+}
+
+// The internal-edge rule on a circle centred inside the polygon, every edge of A internal but one,
+// k. The push is along k's normal by the circle's exact overlap past k's line
+// (`exact_edge_overlap`) when k is the plain answer's face (the least overlap) or the circle
+// reaches k; otherwise no allowed face is usable: the plain separation and no manifold point.
+// Pairs within a hair of a tie or of reaching k are passed by (which side they fall on is
+// rounding).
+template <class T>
+void expect_masked_circle_pushed_along_the_allowed_face() {
+  const double bound = exact_bound(precision_of<T>());
+  int replaced = 0;
+  int unusable = 0;
+  int k = 0;
+  for (const RawCirclePair& p : convex_pairs<T, RawCirclePair>(ConvexClass::Nested)) {
+    if (centre_on_a_vertex(p)) continue;
+    k = (k + 1) % p.a.count;
+    const double size = pair_size(p);
+    const double hair = 1e-6 * size;
+    const double gap = segment_distance(p.b.center, p.a.v[static_cast<std::size_t>(k)],
+                                        p.a.v[static_cast<std::size_t>((k + 1) % p.a.count)]) -
+                       p.b.radius;
+    const double along_k = exact_edge_overlap(p, k);
+    double least_other = HUGE_VAL;
+    for (int e = 0; e < p.a.count; ++e) {
+      if (e != k) least_other = std::min(least_other, exact_edge_overlap(p, e));
+    }
+    if (std::abs(gap) < hair || std::abs(along_k - least_other) < hair) continue;
+    const bool usable = along_k < least_other || gap < 0;
+    ConvexQuery<T> q{Level::Manifold};
+    q.masks_a.edges = static_cast<std::uint8_t>(((1u << p.a.count) - 1) & ~(1u << k));
+    const Result<T> r = solve<T>(p, q);
+    const double want = usable ? -along_k : exact_separation(p).separation;
+    EXPECT_NEAR(double(r.separation), want, bound * size)
+        << "allowed edge " << k << (usable ? ", usable" : ", unusable") << " on " << spelled(p);
+    if (usable) {
+      replaced += along_k < least_other ? 0 : 1;
+      EXPECT_EQ(r.manifold.point_count, 1) << spelled(p);
+      EXPECT_EQ(int(r.manifold.reference_edge), k) << spelled(p);
+    } else {
+      ++unusable;
+      EXPECT_EQ(r.manifold.point_count, 0) << spelled(p);
+    }
+  }
+  // Neither case is vacuous.
+  EXPECT_GT(replaced, kConvexPairsPerClass / 10);
+  EXPECT_GT(unusable, kConvexPairsPerClass / 10);
+}
+
+TEST(ConvexInternalEdges, MaskedCircleIsPushedOutAlongTheAllowedFaceByItsExactOverlap) {
+  expect_masked_circle_pushed_along_the_allowed_face<double>();
+  expect_masked_circle_pushed_along_the_allowed_face<float>();
+}
+
 // Caller's index in `p` of what is index `k` of `reversed(p)`.
 std::uint8_t unreversed(Feature f, int count) {
   const int k = f.index;
