@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -317,29 +318,42 @@ TYPED_TEST(ConvexPairAccuracy, ManifoldPointsLieWithinTheMarginAndNoDeeperThanTh
   expect_manifold_within_margin<typename TypeParam::T, typename TypeParam::Pair>();
 }
 
-// Found by the nested class: the centre on A's vertex 2, where rounding puts it a hair outside the
-// line of the edge ending there, so `collide` takes it for a centre outside, nearest that vertex
-// at distance 0, and divides by it. Exact answer: separation −radius (the separation and status
-// are right), the normal one of the two faces' there (either pushes the circle out by its radius).
+// A circle centre at distance 0 from a vertex as T computes it: `collide` takes the centre for
+// one outside, nearest that vertex, and divides by the distance. The nested class found the first
+// (the centre on A's vertex 2, which rounding puts a hair outside the line of the edge ending
+// there), fuzz_convex the second (a centre 3.8e-270 from A's vertex 0, whose square underflows).
+// Exact answer: the separation (right in both) and a unit normal that moves the circle clear.
 TEST(ConvexPairRegression, CircleCentredOnAVertexGetsAUnitNormal) {
   GTEST_SKIP() << "the solver's bug: a NaN normal for a circle centred on a polygon's vertex";
-  const RawCirclePair p{
-      RawPolygon{{Vec2<double>(-0.091678444619576249, 0.99576171284801929),
-                  Vec2<double>(0.4206529926796051, 0.78780345723685474),
-                  Vec2<double>(0.70446939409688425, 0.26522967083317373),
-                  Vec2<double>(-0.47929728392457294, -0.72343504612692933),
-                  Vec2<double>(-0.3507104674979124, 0.90678761144236664), Vec2<double>::Zero(),
-                  Vec2<double>::Zero(), Vec2<double>::Zero()},
-                 5},
-      RawCircle{Vec2<double>(0.70446939409688425, 0.26522967083317373), 1.1732167951305705}};
-  const Result<double> r = solve<double>(p, ConvexQuery<double>{Level::Manifold});
-  EXPECT_EQ(r.separation, -p.b.radius);
-  // Stop at a NaN: the exact reference takes no NaN.
-  ASSERT_NEAR(r.normal.norm(), 1.0, test_support::tol<double>());
-  const ExactAnswer after = exact_separation(local_with_b_moved(p, r.depth * r.normal));
-  EXPECT_NEAR(after.separation, 0.0, exact_bound(Precision::Double) * pair_size(p));
-  ASSERT_EQ(r.manifold.point_count, 1);
-  EXPECT_TRUE(r.manifold.points[0].point.allFinite());
+  const auto triangle_or_pentagon = [](std::initializer_list<Vec2<double>> points) {
+    RawPolygon a;
+    for (const Vec2<double>& v : points) a.v[static_cast<std::size_t>(a.count++)] = v;
+    return a;
+  };
+  const RawCirclePair pairs[] = {
+      {triangle_or_pentagon({{-0.091678444619576249, 0.99576171284801929},
+                             {0.4206529926796051, 0.78780345723685474},
+                             {0.70446939409688425, 0.26522967083317373},
+                             {-0.47929728392457294, -0.72343504612692933},
+                             {-0.3507104674979124, 0.90678761144236664}}),
+       RawCircle{{0.70446939409688425, 0.26522967083317373}, 1.1732167951305705}},
+      {triangle_or_pentagon({{5.840959477380826e-308, 3.7857679388292641e-270},
+                             {4.7641351903414685e-308, 1.817901781506239e-130},
+                             {1.817901558950338e-130, 1.4190125215845418e-312}}),
+       RawCircle{{4.7641351902119601e-308, 3.632672055258255e-310}, 136908592157728}},
+  };
+  for (const RawCirclePair& p : pairs) {
+    const Result<double> r = solve<double>(p, ConvexQuery<double>{Level::Manifold});
+    const double size = pair_size(p);
+    EXPECT_NEAR(r.separation, exact_separation(p).separation,
+                exact_bound(Precision::Double) * size);
+    EXPECT_NEAR(r.normal.norm(), 1.0, test_support::tol<double>()) << spelled(p);
+    EXPECT_EQ(r.manifold.point_count, 1);
+    EXPECT_TRUE(r.manifold.points[0].point.allFinite());
+    if (!r.normal.allFinite()) continue;  // the exact reference takes no NaN
+    const ExactAnswer after = exact_separation(local_with_b_moved(p, -r.separation * r.normal));
+    EXPECT_NEAR(after.separation, 0.0, exact_bound(Precision::Double) * size);
+  }
 }
 
 // The distance from `c` to the segment from `p` to `q` (double: only to tell whether a circle
