@@ -321,7 +321,9 @@ TYPED_TEST(ConvexPairAccuracy, ManifoldPointsLieWithinTheMarginAndNoDeeperThanTh
 // A circle centre at distance 0 from a vertex as T computes it: `collide` takes the centre for
 // one outside, nearest that vertex, and divides by the distance. The nested class found the first
 // (the centre on A's vertex 2, which rounding puts a hair outside the line of the edge ending
-// there), fuzz_convex the second (a centre 3.8e-270 from A's vertex 0, whose square underflows).
+// there), fuzz_convex the others (a centre 3.8e-270 from A's vertex 0, whose square underflows; a
+// centre 7.4e6 from A's vertex 2 in a triangle of size 8e136, the same point in the frame on A's
+// vertex 0).
 // Exact answer: the separation (right in both) and a unit normal that moves the circle clear.
 TEST(ConvexPairRegression, CircleCentredOnAVertexGetsAUnitNormal) {
   GTEST_SKIP() << "the solver's bug: a NaN normal for a circle centred on a polygon's vertex";
@@ -341,6 +343,10 @@ TEST(ConvexPairRegression, CircleCentredOnAVertexGetsAUnitNormal) {
                              {4.7641351903414685e-308, 1.817901781506239e-130},
                              {1.817901558950338e-130, 1.4190125215845418e-312}}),
        RawCircle{{4.7641351902119601e-308, 3.632672055258255e-310}, 136908592157728}},
+      {triangle_or_pentagon({{8.2454865162444373e+136, 8.2454953887874585e+136},
+                             {8.2454865162444373e+136, 8.2454865162444373e+136},
+                             {7434609.4431372546, 1.0576403555761307e-307}}),
+       RawCircle{{4.7876742615803951e-299, 2.5915867606650499e-318}, 8.2454865162200154e+136}},
   };
   for (const RawCirclePair& p : pairs) {
     const Result<double> r = solve<double>(p, ConvexQuery<double>{Level::Manifold});
