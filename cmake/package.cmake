@@ -1,7 +1,8 @@
 # Install rules and the CMake package: `cmake --install build --prefix P` puts the public headers,
 # the libraries and lib/cmake/dyop/ (dyopConfig.cmake, dyopConfigVersion.cmake, the exported
 # targets dyop::dyop and dyop::box2d_bridge) under P, so that a project finds them with
-# find_package(dyop CONFIG REQUIRED). Included by the top-level CMakeLists.txt (DYOP_INSTALL).
+# find_package(dyop CONFIG REQUIRED), and the licence in share/doc/dyop/ (a program that ships the
+# libraries must carry it: MIT). Included by the top-level CMakeLists.txt (DYOP_INSTALL).
 include(CMakePackageConfigHelpers)
 
 set(DYOP_PACKAGE_TARGETS dyop)
@@ -39,5 +40,6 @@ configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/dyopConfig.cmake.in
                               INSTALL_DESTINATION ${DYOP_PACKAGE_DIR})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/dyopConfigVersion.cmake
                                  VERSION ${PROJECT_VERSION} COMPATIBILITY ${DYOP_COMPATIBILITY})
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/dyop)
 install(FILES ${PROJECT_BINARY_DIR}/dyopConfig.cmake ${PROJECT_BINARY_DIR}/dyopConfigVersion.cmake
         DESTINATION ${DYOP_PACKAGE_DIR})

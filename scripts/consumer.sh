@@ -28,6 +28,7 @@ step "configure the libraries" cmake -S . -B "$work/lib" -DCMAKE_BUILD_TYPE=Rele
   -DDYOP_BUILD_TESTBED=OFF -DDYOP_BUILD_TESTS=OFF -DDYOP_BUILD_BENCH=OFF -DDYOP_BUILD_EXAMPLES=OFF
 step "build the libraries" cmake --build "$work/lib" -j"$jobs"
 step "install into a temporary prefix" cmake --install "$work/lib" --prefix "$work/prefix"
+step "the licence installed with the package" test -s "$work/prefix/share/doc/dyop/LICENSE"
 
 # Both ways the same program: configure, build, run (its output shown).
 consumer() {  # consumer WAY BUILD_DIR CMAKE_ARGS...

@@ -16,22 +16,30 @@ class Registry : public b2Contact {
     }
   }
 
-  static PolygonContactFcns get() {
+  static PolygonContactFcns get(b2Shape::Type b) {
     initialize();
-    const b2ContactRegister& r = s_registers[b2Shape::e_polygon][b2Shape::e_polygon];
+    const b2ContactRegister& r = s_registers[b2Shape::e_polygon][b];
     return {r.createFcn, r.destroyFcn};
   }
 
-  static void set(const PolygonContactFcns& f) {
+  // `AddType` also fills the mirrored entry as not primary, so Box2D hands the fixtures over in
+  // this order (the polygon as A).
+  static void set(const PolygonContactFcns& f, b2Shape::Type b) {
     initialize();
-    AddType(f.create, f.destroy, b2Shape::e_polygon, b2Shape::e_polygon);
+    AddType(f.create, f.destroy, b2Shape::e_polygon, b);
   }
 };
 
 }  // namespace
 
-PolygonContactFcns polygon_contact_fcns() { return Registry::get(); }
+PolygonContactFcns polygon_contact_fcns() { return Registry::get(b2Shape::e_polygon); }
 
-void register_polygon_contact(const PolygonContactFcns& f) { Registry::set(f); }
+void register_polygon_contact(const PolygonContactFcns& f) { Registry::set(f, b2Shape::e_polygon); }
+
+PolygonContactFcns polygon_circle_contact_fcns() { return Registry::get(b2Shape::e_circle); }
+
+void register_polygon_circle_contact(const PolygonContactFcns& f) {
+  Registry::set(f, b2Shape::e_circle);
+}
 
 }  // namespace dyop::box2d::detail

@@ -14,25 +14,20 @@ namespace dyop::box2d {
 namespace detail {
 namespace {
 
-bool is_triangle(const b2Fixture& f) {
-  return f.GetType() == b2Shape::e_polygon &&
-         static_cast<const b2PolygonShape*>(f.GetShape())->m_count == 3;
-}
-
 // The fixtures with fixed edge data whose broad-phase boxes overlap a region.
 class FixedInRegion : public b2QueryCallback {
  public:
   bool ReportFixture(b2Fixture* f) override {
-    if (fixed_edges(*f)) found.push_back(f);
+    if (holds_edge_data(*f) && fixed_polygon_edges(*f)) found.push_back(f);
     return true;
   }
   std::vector<b2Fixture*> found;
 };
 
-// The triangle fixtures of `body`.
-void add_triangles_of(const b2Body& body, std::vector<b2Fixture*>& out) {
+// The polygon fixtures of `body` that can hold fixed edge data.
+void add_polygons_of(const b2Body& body, std::vector<b2Fixture*>& out) {
   for (b2Fixture* f = const_cast<b2Body&>(body).GetFixtureList(); f; f = f->GetNext()) {
-    if (is_triangle(*f)) out.push_back(f);
+    if (holds_edge_data(*f)) out.push_back(f);
   }
 }
 
@@ -61,14 +56,14 @@ void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures) {
 
 void fix_internal_edges(b2Body& body) {
   std::vector<b2Fixture*> fixtures;
-  detail::add_triangles_of(body, fixtures);
+  detail::add_polygons_of(body, fixtures);
   detail::fix_fixtures(*body.GetWorld(), fixtures);
 }
 
 void fix_internal_edges(b2World& world) {
   std::vector<b2Fixture*> fixtures;
   for (const b2Body* body = world.GetBodyList(); body; body = body->GetNext()) {
-    detail::add_triangles_of(*body, fixtures);
+    detail::add_polygons_of(*body, fixtures);
   }
   detail::fix_fixtures(world, fixtures);
 }
@@ -77,7 +72,7 @@ int refresh_internal_edges(b2World& world, const b2AABB& region) {
   detail::FixedInRegion query;
   world.QueryAABB(&query, region);
   for (b2Fixture* f : query.found) {
-    detail::write_fixed_edges(*f, detail::triangle_internal_edges(*f));
+    detail::write_fixed_edges(*f, detail::polygon_internal_edges(*f));
     detail::recompute_contacts_of(*f);  // a kept manifold was computed with the old masks
   }
   return static_cast<int>(query.found.size());
@@ -85,6 +80,11 @@ int refresh_internal_edges(b2World& world, const b2AABB& region) {
 
 std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture) {
   return detail::fixed_edges(fixture);
+}
+
+std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture) {
+  if (!detail::holds_edge_data(fixture)) return std::nullopt;
+  return detail::fixed_polygon_edges(fixture);
 }
 
 }  // namespace dyop::box2d

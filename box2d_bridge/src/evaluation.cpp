@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "convex_evaluation.hpp"
 #include "triangle_contact.hpp"
 
 namespace dyop::box2d {
@@ -9,15 +10,6 @@ namespace detail {
 namespace {
 
 Vec2<float> vec(const b2Vec2& v) { return {v.x, v.y}; }
-
-// Distance from the shape's centroid to its farthest vertex (body frame).
-float bounding_radius(const b2PolygonShape& shape) {
-  float sq = 0;
-  for (int i = 0; i < shape.m_count; ++i) {
-    sq = std::max(sq, (shape.m_vertices[i] - shape.m_centroid).LengthSquared());
-  }
-  return std::sqrt(sq);
-}
 
 bool valid_triangle(const b2PolygonShape& shape) {
   return Triangle<float>::check(vec(shape.m_vertices[0]), vec(shape.m_vertices[1]),
@@ -40,6 +32,15 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
+// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
+// any masks (`Query::internal_edges`, `Apart::Gap`; tested over every input class and edge mask in
+// the library's `InternalEdgesRule` test).
+bool needs_masks(const Result<float>& r, float margin) {
+  return !(r.status == Status::Separated && r.separation > margin);
+}
+
+}  // namespace
+
 // True when a world's contact holds no masks that hold now (`masks`; the rule on): none found
 // under its stamp as it is now (see `TriangleContact::internal_edges_stamp`), or found before a
 // change of the world's fixture count and the pair has moved since as far as such a change could
@@ -49,8 +50,8 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
 // sees it). But the masks are found only for an answer that needs them (`needs_masks`): most
 // contacts a broad phase makes never come within the margin, and finding a static triangle's
 // masks costs a query of the world's broad phase and the covering tests.
-bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Transform& b_in_a,
-                   const ContactMemory& memory, FoundMasks& masks, const TriangleContact& contact,
+bool masks_put_off(const Setting& setting, const b2Transform& b_in_a, const b2Vec2& centroid_b,
+                   float lever, FoundMasks& masks, const TriangleContact& contact,
                    const ManifoldRecycling* recycling) {
   const std::uint16_t stamp = contact.internal_edges_stamp(setting.epoch);
   if (masks.stamp != stamp) {
@@ -63,9 +64,8 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
       // Since the last answer afresh, which had not seen the count move or followed the motion
       // already: every evaluation in between kept its manifold (within the recycling distance of
       // that pose) or was a skip (then the motion is infinite).
-      const float lever = recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius);
-      masks.motion += recycling ? recycling->motion(b_in_a, pair.b.m_centroid, lever, setting.epoch)
-                                : HUGE_VALF;
+      masks.motion +=
+          recycling ? recycling->motion(b_in_a, centroid_b, lever, setting.epoch) : HUGE_VALF;
       if (!masks_hold(masks, setting.config.recycle_distance)) {
         masks.motion = FoundMasks::not_found;
       }
@@ -74,22 +74,14 @@ bool masks_put_off(const Setting& setting, const PolygonPair& pair, const b2Tran
   return !masks.found();
 }
 
-// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
-// any masks (`Query::internal_edges`, `Apart::Gap`; tested over every input class and edge mask in
-// the library's `InternalEdgesRule` test).
-bool needs_masks(const Result<float>& r, float margin) {
-  return !(r.status == Status::Separated && r.separation > margin);
-}
-
-}  // namespace
-
 void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory) {
+  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
   if (a.m_count != 3 || b.m_count != 3) {
-    memory.shapes = ContactMemory::Shapes::Polygons;
+    memory.shapes = valid_polygon(a) && valid_polygon(b) ? ContactMemory::Shapes::Polygons
+                                                         : ContactMemory::Shapes::InvalidPolygons;
     return;
   }
   memory.shapes = ContactMemory::Shapes::UnvalidatedTriangles;
-  memory.radius_sum = bounding_radius(a) + bounding_radius(b);
 }
 
 void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory) {
@@ -120,8 +112,10 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
       memory.internal_edges = *fixed;
       masks->stamp = FoundMasks::fixed_stamp;
     } else {
-      put_off =
-          contact && masks_put_off(setting, pair, b_in_a, memory, *masks, *contact, recycling);
+      put_off = contact &&
+                masks_put_off(setting, b_in_a, pair.b.m_centroid,
+                              recycle_lever(memory.radius_sum, pair.a.m_radius + pair.b.m_radius),
+                              *masks, *contact, recycling);
     }
     if (!put_off) query.internal_edges = memory.internal_edges;
   }
@@ -139,8 +133,14 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
 
   const Manifold<float>& mf = r.manifold;
   memory.last_face = static_cast<std::int8_t>(mf.reference_edge + (mf.reference_is_a ? 0 : 3));
+  write_manifold(manifold, mf, pair, b_in_a);
+  return true;
+}
+
+void write_manifold(b2Manifold* manifold, const Manifold<float>& mf, const PolygonPair& pair,
+                    const b2Transform& b_in_a) {
   manifold->pointCount = mf.point_count;
-  if (mf.point_count == 0) return true;
+  if (mf.point_count == 0) return;
 
   // The reference face in its own body's frame, from the polygon's own data (not the method's
   // recomputed normal): the solver then sees exactly the plane Box2D would have given it.
@@ -151,7 +151,7 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
   manifold->localNormal = ref.m_normals[e1];
   manifold->localPoint = 0.5f * (ref.m_vertices[e1] + ref.m_vertices[e2]);
   for (int i = 0; i < mf.point_count; ++i) {
-    // Points lie on the incident triangle, computed in A's frame: B's points go back to B's frame.
+    // Points lie on the incident polygon, computed in A's frame: B's points go back to B's frame.
     const b2Vec2 p(mf.points[i].point.x(), mf.points[i].point.y());
     b2ManifoldPoint& mp = manifold->points[i];
     mp.localPoint = mf.reference_is_a ? b2MulT(b_in_a, p) : p;
@@ -159,7 +159,6 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
     mp.tangentImpulse = 0;
     mp.id.key = mf.points[i].key;
   }
-  return true;
 }
 
 }  // namespace detail
@@ -170,6 +169,19 @@ void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShap
   ContactMemory cold;
   detail::evaluate(manifold, detail::Setting(backend, config, 0), {shape_a, xf_a, shape_b, xf_b},
                    memory ? *memory : cold);
+}
+
+}  // namespace dyop::box2d
+
+namespace dyop::box2d {
+
+void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
+                                const b2PolygonShape& polygon, const b2Transform& xf_a,
+                                const b2CircleShape& circle, const b2Transform& xf_b,
+                                ContactMemory* memory, const Config& config) {
+  ContactMemory cold;
+  detail::evaluate_polygon_circle(manifold, detail::Setting(backend, config, 0), polygon, xf_a,
+                                  circle, xf_b, memory ? *memory : cold, nullptr, nullptr, nullptr);
 }
 
 }  // namespace dyop::box2d

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "convex_evaluation.hpp"
 #include "dyop/box2d.hpp"
 #include "found_masks.hpp"
 #include "installation.hpp"
@@ -47,6 +48,20 @@ void validate_triangles(const b2PolygonShape& a, const b2PolygonShape& b, Contac
 bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair& pair,
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
                 FoundMasks* masks, const ManifoldRecycling* recycling);
+
+// Writes the solver's manifold `mf` (computed in A's body frame; `b_in_a`: B's body frame given in
+// A's) as Box2D's: the reference face from the polygon's own data, points in the incident body's
+// frame, the solver's keys.
+void write_manifold(b2Manifold* manifold, const Manifold<float>& mf, const PolygonPair& pair,
+                    const b2Transform& b_in_a);
+
+// True when a world's contact `contact` (the rule on) holds no masks that hold now under the
+// setting's install and the world as it is (see evaluation.cpp); its stamp and fixture count are
+// brought up to date. `recycling`: the pose of its last answer afresh, nullptr for none;
+// `centroid_b` and `lever` as `ManifoldRecycling::motion` takes them.
+bool masks_put_off(const Setting& setting, const b2Transform& b_in_a, const b2Vec2& centroid_b,
+                   float lever, FoundMasks& masks, const TriangleContact& contact,
+                   const ManifoldRecycling* recycling);
 
 // Separation of the pair along face `face` (0..2: A's edge, 3..5: B's; frames as in
 // `b_in_a`, B's body frame given in A's), with the other triangle's whole support: a lower bound
@@ -88,22 +103,30 @@ inline bool circles_apart(const b2PolygonShape& a, const b2PolygonShape& b,
 // `Setting::never_recompute`): see recycling.hpp. A change of the pair's internal-edge masks
 // (their stamp moved, or they were forgotten) recomputes; a change of the world's fixture count
 // alone recomputes only once the pair may have moved toward it (`masks_hold`): one near the pair
-// makes or ends a contact with one of its bodies, which forgets the masks at once.
-inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
-                           const ContactMemory& memory, const ManifoldRecycling& recycling,
-                           const TriangleContact* contact, FoundMasks* masks, float margin) {
+// makes or ends a contact with one of its bodies, which forgets the masks at once. `rule`: the
+// internal-edge rule is in force for the pair.
+inline bool keeps_manifold_at(const Setting& setting, bool rule, const b2Transform& b_in_a,
+                              const b2Vec2& centroid_b, float lever,
+                              const ManifoldRecycling& recycling, const TriangleContact* contact,
+                              FoundMasks* masks) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
-  if (!recycling.keeps(b_in_a, p.b.m_centroid, recycle_lever(memory.radius_sum, margin),
-                       setting.epoch)) {
-    return false;
-  }
-  if (!setting.internal_edges || !contact) return true;
+  if (!recycling.keeps(b_in_a, centroid_b, lever, setting.epoch)) return false;
+  if (!rule || !contact) return true;
   if (masks->fixed()) return true;  // changed only by a refresh, which recomputes
   if (masks->stamp != contact->internal_edges_stamp(setting.epoch)) return false;
   // Put off: the manifold was answered without masks (apart beyond the margin, the same under any).
   if (!masks->found()) return true;
   notice_fixture_count(*masks, contact->world_fixtures());
   return masks_hold(*masks, setting.config.recycle_distance);
+}
+
+// `keeps_manifold_at` for a polygon pair: B's centroid, the lever from the pair's bounding radii
+// and the skins `margin`.
+inline bool keeps_manifold(const Setting& setting, const PolygonPair& p, const b2Transform& b_in_a,
+                           const ContactMemory& memory, const ManifoldRecycling& recycling,
+                           const TriangleContact* contact, FoundMasks* masks, float margin) {
+  return keeps_manifold_at(setting, setting.internal_edges, b_in_a, p.b.m_centroid,
+                           recycle_lever(memory.radius_sum, margin), recycling, contact, masks);
 }
 
 // How far a manifold the method just computed may move before a recompute: the setting's
@@ -240,7 +263,8 @@ inline void evaluate(b2Manifold* manifold, const Setting& setting, const Polygon
       answer(manifold, setting, pair, b_in_a, memory, contact, masks, recycling);
       return;
     }
-    counters().polygon_pairs.add();
+    evaluate_polygons(manifold, setting, pair, memory, contact, masks, recycling);
+    return;
   }
   b2CollidePolygons(manifold, &pair.a, pair.xf_a, &pair.b, pair.xf_b);
 }

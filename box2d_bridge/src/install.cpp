@@ -20,6 +20,7 @@ InstallResult install_setting(Backend backend, const Config& config, bool never_
   }
   if (!now.saved) {
     now.box2d_own = detail::polygon_contact_fcns();
+    now.box2d_own_circle = detail::polygon_circle_contact_fcns();
     now.saved = true;
   }
   // Contacts already made, ours and Box2D's own, stay valid under any registration: see
@@ -28,6 +29,11 @@ InstallResult install_setting(Backend backend, const Config& config, bool never_
   // new epoch.
   detail::register_polygon_contact(
       {&detail::TriangleContact::create, &detail::TriangleContact::destroy});
+  // Circles too, unless kept to triangle pairs; our destroy function stays either way, as for
+  // polygon pairs.
+  detail::register_polygon_circle_contact(
+      {config.triangles_only ? now.box2d_own_circle.create : &detail::TriangleContact::create,
+       &detail::TriangleContact::destroy});
   const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
   now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
   now.setting.never_recompute = never_recompute;
@@ -66,6 +72,8 @@ InstallResult uninstall() {
   // Box2D's own create function; our destroy function stays, as it frees every polygon contact
   // as what it is (ours are not in the class Box2D's own destroy function frees).
   detail::register_polygon_contact({now.box2d_own.create, &detail::TriangleContact::destroy});
+  detail::register_polygon_circle_contact(
+      {now.box2d_own_circle.create, &detail::TriangleContact::destroy});
   // The config and the epoch stay: `installed_config()` is the last install's.
   now.setting.backend.reset();
   now.setting.method.reset();

@@ -53,6 +53,8 @@ struct Installation {
   // b2PolygonContact (its functions are not exported, so they can only be saved from the
   // registry). Valid once `saved` is true.
   PolygonContactFcns box2d_own;
+  // The same for polygon–circle pairs (Box2D's own b2PolygonAndCircleContact).
+  PolygonContactFcns box2d_own_circle;
   bool saved = false;
 };
 

@@ -22,40 +22,47 @@ namespace {
 constexpr float flat_outline_sine = 1e-3f;
 
 // A non-static body with at most this many fixtures has its list walked instead of the broad
-// phase queried. Why: the result is the same (every triangle of the body is a candidate; only
+// phase queried. Why: the result is the same (every polygon of the body is a candidate; only
 // those touching it count), and a walk costs tens of instructions per fixture against thousands
 // for one query of a ground's broad phase: below a few dozen fixtures the walk is cheaper, and a
 // split box or a star (2 to 10 fixtures) never pays for a query. A static body
 // always queries: its group spans the other static bodies.
 constexpr int walked_body_fixtures = 16;
 
-const b2PolygonShape* triangle_of(const b2Fixture& f) {
+const b2PolygonShape* polygon_of(const b2Fixture& f) {
   if (f.GetType() != b2Shape::e_polygon) return nullptr;
-  const auto* p = static_cast<const b2PolygonShape*>(f.GetShape());
-  return p->m_count == 3 ? p : nullptr;
+  return static_cast<const b2PolygonShape*>(f.GetShape());
 }
 
 float magnitude(const b2Vec2& v) { return std::max(std::abs(v.x), std::abs(v.y)); }
 
-int next(int i) { return i < 2 ? i + 1 : 0; }
-
-// A triangle of the edge group in the frame of the fixture whose masks are found, Box2D's order.
-struct GroupTriangle {
-  b2Vec2 v[3];
+// A polygon of the edge group in the frame of the fixture whose masks are found, Box2D's order.
+struct GroupPolygon {
+  b2Vec2 v[b2_maxPolygonVertices];
+  int count = 3;
+  int next(int i) const { return i + 1 < count ? i + 1 : 0; }
 };
 
-// The triangle fixtures that share edges with one fixture's body (`share_edges`) near it: those
-// whose broad-phase boxes overlap its own (or all of a small non-static body's), in its body's
-// frame; the fixture's own triangle first.
+GroupPolygon group_polygon(const b2PolygonShape& p) {
+  GroupPolygon t;
+  t.count = p.m_count;
+  for (int i = 0; i < p.m_count; ++i) t.v[i] = p.m_vertices[i];
+  return t;
+}
+
+// The polygon fixtures (triangles or any other vertex count) that share edges with one fixture's
+// body (`share_edges`) near it: those whose broad-phase boxes overlap its own (or all of a small
+// non-static body's), in its body's frame; the fixture's own polygon first.
 class Group : public b2QueryCallback {
  public:
   // `scratch` is emptied and filled: the calling thread's, reused so that finding masks
   // allocates nothing once it has grown to the largest neighbourhood seen.
-  Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupTriangle>& scratch)
-      : self_(self), body_(*self.GetBody()), own_(own), triangles_(scratch) {
-    triangles_.clear();
-    triangles_.push_back({{own.m_vertices[0], own.m_vertices[1], own.m_vertices[2]}});
-    for (const b2Vec2& v : triangles_.front().v) own_scale_ = std::max(own_scale_, magnitude(v));
+  Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupPolygon>& scratch)
+      : self_(self), body_(*self.GetBody()), own_(own), polygons_(scratch) {
+    polygons_.clear();
+    polygons_.push_back(group_polygon(own));
+    const GroupPolygon& first = polygons_.front();
+    for (int i = 0; i < first.count; ++i) own_scale_ = std::max(own_scale_, magnitude(first.v[i]));
   }
 
   void collect() {
@@ -68,7 +75,7 @@ class Group : public b2QueryCallback {
         return;
       }
     }
-    // The triangle's own box, not its broad-phase proxy's: every triangle touching it overlaps
+    // The polygon's own box, not its broad-phase proxy's: every polygon touching it overlaps
     // it with its fattened box, and a disabled body's fixture has no proxy.
     b2AABB box;
     own_.ComputeAABB(&box, body_.GetTransform(), 0);
@@ -80,7 +87,7 @@ class Group : public b2QueryCallback {
     return true;  // every overlap
   }
 
-  const std::vector<GroupTriangle>& triangles() const { return triangles_; }
+  const std::vector<GroupPolygon>& polygons() const { return polygons_; }
 
   // Two points of the group are one point, and a point lies on an edge's line, within this
   // distance (metres). Why: a vertex of another body is placed in the world by its body's
@@ -103,9 +110,9 @@ class Group : public b2QueryCallback {
     if (&f == &self_ || f.IsSensor()) return;
     const b2Body& body = *f.GetBody();
     if (!share_edges(body_, body)) return;
-    const b2PolygonShape* p = triangle_of(f);
+    const b2PolygonShape* p = polygon_of(f);
     if (!p) return;
-    GroupTriangle t{{p->m_vertices[0], p->m_vertices[1], p->m_vertices[2]}};
+    GroupPolygon t = group_polygon(*p);
     const b2Transform& mine = body_.GetTransform();
     const b2Transform& theirs = body.GetTransform();
     // Bodies at the same place (tiles made at the origin): one frame, the coordinates as given.
@@ -113,7 +120,7 @@ class Group : public b2QueryCallback {
                                                mine.q.c == theirs.q.c && mine.q.s == theirs.q.s);
     float origins = 0;
     if (!one_frame) {
-      for (b2Vec2& v : t.v) v = b2MulT(mine, b2Mul(theirs, v));
+      for (int i = 0; i < t.count; ++i) t.v[i] = b2MulT(mine, b2Mul(theirs, t.v[i]));
       origins = magnitude(mine.p) + magnitude(theirs.p);
     }
     if (!touches(t, tolerance_for(origins))) return;
@@ -121,7 +128,7 @@ class Group : public b2QueryCallback {
       placed_ = true;
       other_origins_ = std::max(other_origins_, magnitude(theirs.p));
     }
-    triangles_.push_back(t);
+    polygons_.push_back(t);
   }
 
   // The tolerance for points placed through frames whose origins sum to `origins` in magnitude.
@@ -129,26 +136,26 @@ class Group : public b2QueryCallback {
     return coincidence_epsilons * FLT_EPSILON * (own_scale_ + origins);
   }
 
-  // True when `t` may bound the own triangle's outline: a vertex of it lies on the line of an own
-  // edge, or an own vertex on the line of one of its edges (within `tol`). Only such triangles
+  // True when `t` may bound the own polygon's outline: a vertex of it lies on the line of an own
+  // edge, or an own vertex on the line of one of its edges (within `tol`). Only such polygons
   // have an edge collinear with an own edge or through an own vertex, all that the masks read;
   // the others (most of what the broad phase's fattened box meets) are left out of every pass.
-  bool touches(const GroupTriangle& t, float tol) const {
-    const GroupTriangle& own = triangles_.front();
+  bool touches(const GroupPolygon& t, float tol) const {
+    const GroupPolygon& own = polygons_.front();
     const float tol_sq = tol * tol;
     const auto on_line = [&](const b2Vec2& a, const b2Vec2& b, const b2Vec2& p) {
       const b2Vec2 d = b - a;
       const float off = b2Cross(d, p - a);
       return off * off <= tol_sq * d.LengthSquared();
     };
-    for (int i = 0; i < 3; ++i) {
-      for (const b2Vec2& p : t.v) {
-        if (on_line(own.v[i], own.v[next(i)], p)) return true;
+    for (int i = 0; i < own.count; ++i) {
+      for (int k = 0; k < t.count; ++k) {
+        if (on_line(own.v[i], own.v[own.next(i)], t.v[k])) return true;
       }
     }
-    for (int k = 0; k < 3; ++k) {
-      for (const b2Vec2& p : own.v) {
-        if (on_line(t.v[k], t.v[next(k)], p)) return true;
+    for (int k = 0; k < t.count; ++k) {
+      for (int i = 0; i < own.count; ++i) {
+        if (on_line(t.v[k], t.v[t.next(k)], own.v[i])) return true;
       }
     }
     return false;
@@ -157,20 +164,21 @@ class Group : public b2QueryCallback {
   const b2Fixture& self_;
   const b2Body& body_;
   const b2PolygonShape& own_;
-  std::vector<GroupTriangle>& triangles_;
+  std::vector<GroupPolygon>& polygons_;
   // The tolerance's scale (see `tolerance`): 16 FLT_EPSILON.
   static constexpr float coincidence_epsilons = 16;
-  float own_scale_ = 0;      // the largest magnitude of the own triangle's coordinates
-  bool placed_ = false;      // a triangle of another frame was placed in this one
+  float own_scale_ = 0;      // the largest magnitude of the own polygon's coordinates
+  bool placed_ = false;      // a polygon of another frame was placed in this one
   float other_origins_ = 0;  // the largest magnitude of those frames' origins
 };
 
 // The segment a→b as a line: where points lie along it and how far off it.
 struct Line {
-  b2Vec2 from;
-  b2Vec2 unit;
-  float length;
+  b2Vec2 from{0, 0};
+  b2Vec2 unit{0, 0};
+  float length = 0;
 
+  Line() = default;
   Line(const b2Vec2& a, const b2Vec2& b) : from(a) {
     const b2Vec2 d = b - a;
     length = d.Length();
@@ -186,21 +194,22 @@ struct Interval {
   float hi;
 };
 
-// An edge of the group, from a to b (its triangle on its left).
+// An edge of the group, from a to b (its polygon on its left).
 struct Segment {
   b2Vec2 a;
   b2Vec2 b;
-  // Bit i: both ends within the tolerance of the own triangle's edge line i (`on_own_lines`).
+  // Bit i: both ends within the tolerance of the own polygon's edge line i (`on_own_lines`).
   std::uint8_t on_own_lines = 0;
 };
 
 // True when `x` lies within `tol` of `line` (the test of the opposite covers).
 bool within(const Line& line, const b2Vec2& x, float tol) { return !(std::abs(line.off(x)) > tol); }
 
-// Bit i set when `x` lies within `tol` of `lines[i]`.
-std::uint8_t on_own_lines(const Line (&lines)[3], const b2Vec2& x, float tol) {
-  return static_cast<std::uint8_t>(within(lines[0], x, tol) | within(lines[1], x, tol) << 1 |
-                                   within(lines[2], x, tol) << 2);
+// Bit i set when `x` lies within `tol` of `lines[i]`, for the own polygon's `count` lines.
+std::uint8_t on_own_lines(const Line* lines, int count, const b2Vec2& x, float tol) {
+  unsigned bits = 0;
+  for (int i = 0; i < count; ++i) bits |= static_cast<unsigned>(within(lines[i], x, tol)) << i;
+  return static_cast<std::uint8_t>(bits);
 }
 
 // Whether a line is covered just before a point of it and just after it.
@@ -210,7 +219,7 @@ struct StretchesCovered {
 };
 
 // Whether the edges among `edges` running the other way along `line` (both ends within `tol` of
-// it: their triangles lie on its other side) cover the line just before the parameter `t`
+// it: their polygons lie on its other side) cover the line just before the parameter `t`
 // (reaching `t` within `tol`), and just after it. Only what `want_before` and `want_after` ask
 // for is looked for; the walk stops once that is found.
 StretchesCovered opposite_cover_next_to(const std::vector<Segment>& edges, const Line& line,
@@ -228,8 +237,8 @@ StretchesCovered opposite_cover_next_to(const std::vector<Segment>& edges, const
   return covered;
 }
 
-// The same for the own triangle's edge line `i`, whose ends' tests were made once per vertex
-// (`Segment::on_own_lines`): a vertex is shared by two edges of its triangle, and most edges lie
+// The same for the own polygon's edge line `i`, whose ends' tests were made once per vertex
+// (`Segment::on_own_lines`): a vertex is shared by two edges of its polygon, and most edges lie
 // on no own line. Not one template with `opposite_cover_next_to`: each tests first what rejects
 // cheapest for its callers, here the bit, there the direction (measured: docs/measurements.md,
 // "Choices in the code").
@@ -306,51 +315,53 @@ struct VertexOutline {
 
 }  // namespace
 
-InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
-  const b2PolygonShape* own = triangle_of(fixture);
+ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
+  const b2PolygonShape* own = polygon_of(fixture);
   if (!own) return {};
   const b2Body& body = *fixture.GetBody();
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
   if (alone && body.GetType() != b2_staticBody) return {};
 
-  thread_local std::vector<GroupTriangle> scratch;
+  thread_local std::vector<GroupPolygon> scratch;
   Group group(fixture, *own, scratch);
   group.collect();
-  const std::vector<GroupTriangle>& triangles = group.triangles();
-  if (triangles.size() == 1) return {};
+  const std::vector<GroupPolygon>& polygons = group.polygons();
+  if (polygons.size() == 1) return {};
   const float tol = group.tolerance();
-  const GroupTriangle& self = triangles.front();
-  const Line lines[3] = {{self.v[0], self.v[1]}, {self.v[1], self.v[2]}, {self.v[2], self.v[0]}};
+  const GroupPolygon& self = polygons.front();
+  const int n = self.count;
+  Line lines[b2_maxPolygonVertices] = {};
+  for (int i = 0; i < n; ++i) lines[i] = Line(self.v[i], self.v[self.next(i)]);
   thread_local std::vector<Segment> edges;
   edges.clear();
-  for (const GroupTriangle& t : triangles) {
-    std::uint8_t on[3];
-    for (int k = 0; k < 3; ++k) on[k] = on_own_lines(lines, t.v[k], tol);
-    for (int k = 0; k < 3; ++k) {
-      edges.push_back({t.v[k], t.v[next(k)], static_cast<std::uint8_t>(on[k] & on[next(k)])});
+  for (const GroupPolygon& t : polygons) {
+    std::uint8_t on[b2_maxPolygonVertices];
+    for (int k = 0; k < t.count; ++k) on[k] = on_own_lines(lines, n, t.v[k], tol);
+    for (int k = 0; k < t.count; ++k) {
+      edges.push_back({t.v[k], t.v[t.next(k)], static_cast<std::uint8_t>(on[k] & on[t.next(k)])});
     }
   }
 
   thread_local std::vector<Interval> cover;
-  InternalEdges masks;
-  for (int i = 0; i < 3; ++i) {
+  ShapeMasks masks;
+  for (int i = 0; i < n; ++i) {
     opposite_cover_own(edges, lines[i], i, cover);
     if (covers_wholly(cover, lines[i].length, tol)) {
       masks.edges |= static_cast<std::uint8_t>(1u << i);
     }
   }
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < n; ++i) {
     const bool out_internal = (masks.edges >> i) & 1;
-    const bool in_internal = (masks.edges >> (i > 0 ? i - 1 : 2)) & 1;
-    // A corner of the outline made by this triangle's own two edges: every direction between
-    // their normals is the outline's, as for a lone triangle.
+    const bool in_internal = (masks.edges >> (i > 0 ? i - 1 : n - 1)) & 1;
+    // A corner of the outline made by this polygon's own two edges: every direction between
+    // their normals is the outline's, as for a lone polygon.
     if (!out_internal && !in_internal) continue;
     // Both edges internal: the vertex is inside the group, or on the outline between other
-    // triangles' edges (a fan's apex touching the top), whose own pairs carry its contact with
-    // their edges' normals; none of this triangle's pairs may push there.
+    // polygons' edges (a fan's apex touching the top), whose own pairs carry its contact with
+    // their edges' normals; none of this polygon's pairs may push there.
     if (!(out_internal && in_internal)) {
       // One edge internal: closed where the outline through the vertex is flat or reflex. Every
-      // triangle touching the vertex is in the group found, so the outline pieces there are all
+      // polygon touching the vertex is in the group found, so the outline pieces there are all
       // seen.
       VertexOutline outline;
       outline.gather(edges, self.v[i], tol);
@@ -361,10 +372,21 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   return masks;
 }
 
+InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
+  const b2PolygonShape* own = polygon_of(fixture);
+  if (!own || own->m_count != 3) return {};
+  const ShapeMasks m = polygon_internal_edges(fixture);
+  return {m.edges, m.closed_vertices};
+}
+
 }  // namespace detail
 
 InternalEdges triangle_internal_edges(const b2Fixture& fixture) {
   return detail::triangle_internal_edges(fixture);
+}
+
+ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
+  return detail::polygon_internal_edges(fixture);
 }
 
 }  // namespace dyop::box2d

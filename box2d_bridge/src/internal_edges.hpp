@@ -8,6 +8,7 @@
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 
+#include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
 
 namespace dyop::box2d::detail {
@@ -34,5 +35,9 @@ inline bool share_edges(const b2Body& a, const b2Body& b) {
 // broad phase finds them all; cost: one query of that box (a walk of a small non-static
 // body's fixtures instead).
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
+
+// The same for a polygon fixture of any vertex count (bits 0..count−1, Box2D's order); its edge
+// group holds polygons of every vertex count. Empty for a circle, edge or chain.
+ShapeMasks polygon_internal_edges(const b2Fixture& fixture);
 
 }  // namespace dyop::box2d::detail

@@ -19,6 +19,8 @@ void add_to(Stats& to, const ThreadCounters& from) {
     }
   }
   to.polygon_pairs += from.polygon_pairs.get();
+  to.circle_pairs += from.circle_pairs.get();
+  to.exact_pairs += from.exact_pairs.get();
   to.manifolds += from.manifolds.get();
   to.fallbacks += from.fallbacks.get();
   to.internal_edge_pairs += from.internal_edge_pairs.get();
@@ -28,6 +30,8 @@ void add_to(Stats& to, const ThreadCounters& from) {
 void clear(ThreadCounters& c) {
   for (Counter& x : c.triangle_pairs) x.clear();
   c.polygon_pairs.clear();
+  c.circle_pairs.clear();
+  c.exact_pairs.clear();
   c.manifolds.clear();
   c.fallbacks.clear();
   for (auto& by_kind : c.skipped) {

@@ -36,6 +36,8 @@ class Counter {
 struct ThreadCounters {
   std::array<Counter, backend_count> triangle_pairs;
   Counter polygon_pairs;
+  Counter circle_pairs;
+  Counter exact_pairs;
   Counter manifolds;
   Counter fallbacks;
   std::array<std::array<Counter, skip_count>, backend_count> skipped;

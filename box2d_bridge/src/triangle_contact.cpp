@@ -1,6 +1,7 @@
 #include "triangle_contact.hpp"
 
 #include <box2d/b2_block_allocator.h>
+#include <box2d/b2_circle_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
 
@@ -10,6 +11,7 @@
 
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_measurement.hpp"
+#include "convex_evaluation.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
 #include "installation.hpp"
@@ -132,8 +134,10 @@ void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
   fixtures_changed_near(*contact);
   if (!ours(contact)) {
     // Made by Box2D's own code before an install: its own function frees it. `installation()`
-    // saved that function before our destroy could ever be registered.
-    installation().box2d_own.destroy(contact, allocator);
+    // saved those functions before our destroy could ever be registered.
+    const bool circle = contact->GetFixtureB()->GetType() == b2Shape::e_circle;
+    (circle ? installation().box2d_own_circle : installation().box2d_own)
+        .destroy(contact, allocator);
     return;
   }
   static_cast<TriangleContact*>(contact)->~TriangleContact();
@@ -175,8 +179,8 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
   if (!(a && b))
     for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-      if (&c == this || c.masks_.stamp != stamp || !c.masks_.settled() ||
-          c.masks_.fixtures != fixtures) {
+      if (&c == this || beyond_triangles(c.memory_) || c.masks_.stamp != stamp ||
+          !c.masks_.settled() || c.masks_.fixtures != fixtures) {
         return true;
       }
       const InternalEdges m = c.memory_.internal_edges;
@@ -226,6 +230,8 @@ void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
 
 [[gnu::noinline]] void TriangleContact::keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a,
                                                       const b2Transform& xf_b) {
+  // Pairs beyond two triangles keep theirs on their own path (convex_evaluation.cpp).
+  if (beyond_triangles(memory_)) return evaluate_cold(manifold, xf_a, xf_b);
   if (detail::keep(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this,
                    &masks_)) {
     return;
@@ -258,19 +264,30 @@ PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf
 [[gnu::noinline, gnu::cold]] void TriangleContact::evaluate_cold(b2Manifold* manifold,
                                                                  const b2Transform& xf_a,
                                                                  const b2Transform& xf_b) {
-  evaluate(manifold, installation().setting, pair(xf_a, xf_b), memory_, this, &masks_, &recycling_);
+  evaluate_with(manifold, installation().setting, xf_a, xf_b, memory_, &masks_, &recycling_);
+}
+
+void TriangleContact::evaluate_with(b2Manifold* manifold, const Setting& setting,
+                                    const b2Transform& xf_a, const b2Transform& xf_b,
+                                    ContactMemory& memory, FoundMasks* masks,
+                                    ManifoldRecycling* recycling) const {
+  if (m_fixtureB->GetType() == b2Shape::e_circle) {
+    evaluate_polygon_circle(manifold, setting,
+                            *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
+                            *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b,
+                            memory, this, masks, recycling);
+    return;
+  }
+  evaluate(manifold, setting, pair(xf_a, xf_b), memory, this, masks, recycling);
 }
 
 void TriangleContact::fresh_manifold(b2Manifold* manifold) const {
-  const auto& a = *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
-  const auto& b = *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape());
   ContactMemory memory = memory_;  // its masks and warm start, not its state
   FoundMasks masks = masks_;
   Setting setting = installation().setting;
   setting.never_recompute = false;
-  evaluate(manifold, setting,
-           {a, m_fixtureA->GetBody()->GetTransform(), b, m_fixtureB->GetBody()->GetTransform()},
-           memory, this, &masks);
+  evaluate_with(manifold, setting, m_fixtureA->GetBody()->GetTransform(),
+                m_fixtureB->GetBody()->GetTransform(), memory, &masks, nullptr);
 }
 
 }  // namespace dyop::box2d::detail
@@ -281,10 +298,19 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
   manifold->pointCount = 0;
   const b2Fixture* fa = contact.GetFixtureA();
   const b2Fixture* fb = contact.GetFixtureB();
-  if (fa->GetType() != b2Shape::e_polygon || fb->GetType() != b2Shape::e_polygon) return;
+  const bool circle = fb->GetType() == b2Shape::e_circle;
+  if (fa->GetType() != b2Shape::e_polygon || (fb->GetType() != b2Shape::e_polygon && !circle)) {
+    return;
+  }
   auto* c = const_cast<b2Contact*>(&contact);
   if (const detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
     ours->fresh_manifold(manifold);
+    return;
+  }
+  if (circle) {
+    b2CollidePolygonAndCircle(
+        manifold, static_cast<const b2PolygonShape*>(fa->GetShape()), fa->GetBody()->GetTransform(),
+        static_cast<const b2CircleShape*>(fb->GetShape()), fb->GetBody()->GetTransform());
     return;
   }
   b2CollidePolygons(

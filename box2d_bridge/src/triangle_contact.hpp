@@ -13,6 +13,7 @@
 #include "dyop/box2d.hpp"
 #include "edge_data.hpp"
 #include "found_masks.hpp"
+#include "installation.hpp"
 #include "polygon_pair.hpp"
 #include "recycling.hpp"
 
@@ -32,11 +33,11 @@ inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   return static_cast<std::uint32_t>(x >> 32);
 }
 
-// Box2D's contact for a polygon pair made while the plug-in is installed: `Evaluate` is the
-// plug-in's evaluation with whatever is installed at the time (Box2D's own answer once
-// uninstalled). Holds no heap memory (b2World's destructor frees contacts without running their
-// destructors): what the pair remembers between steps is its `ContactMemory`, inside the object.
-// Last step's manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
+// Box2D's contact for a polygon pair or a polygon–circle pair made while the plug-in is installed:
+// `Evaluate` is the plug-in's evaluation with whatever is installed at the time (Box2D's own answer
+// once uninstalled). Holds no heap memory (b2World's destructor frees contacts without running
+// their destructors): what the pair remembers between steps is its `ContactMemory`, inside the
+// object. Last step's manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
 class TriangleContact final : public b2Contact {
  public:
   // Box2D's create / destroy functions for the registry (b2ContactCreateFcn / b2ContactDestroyFcn).
@@ -108,7 +109,8 @@ class TriangleContact final : public b2Contact {
   // the fixture count it would have now, and the count never seen to move since: it may have
   // come back by other changes), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
-    if (!masks_.settled() || masks_.stamp == 0 || masks_.stamp != internal_edges_stamp(epoch) ||
+    if (memory_.shapes >= ContactMemory::Shapes::Polygons || !masks_.settled() ||
+        masks_.stamp == 0 || masks_.stamp != internal_edges_stamp(epoch) ||
         masks_.fixtures != world_fixtures()) {
       return std::nullopt;
     }
@@ -146,7 +148,13 @@ class TriangleContact final : public b2Contact {
   // contact list is short (a static body's spans the world).
   std::optional<InternalEdges> half_from_body(const b2Fixture& fixture, std::uint8_t epoch) const;
 
-  // Its two shapes with the bodies' transforms.
+  // The evaluation with `setting` of its pair (a polygon pair or a polygon and a circle) from
+  // `memory` and its masks' record `masks`, keeping nothing when `recycling` is nullptr.
+  void evaluate_with(b2Manifold* manifold, const Setting& setting, const b2Transform& xf_a,
+                     const b2Transform& xf_b, ContactMemory& memory, FoundMasks* masks,
+                     ManifoldRecycling* recycling) const;
+
+  // Its two shapes with the bodies' transforms (a polygon pair).
   PolygonPair pair(const b2Transform& xf_a, const b2Transform& xf_b) const;
 
   // `Evaluate`'s paths out of line (see there): keep, else go on to skip or answer; skip or

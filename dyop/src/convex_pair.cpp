@@ -40,23 +40,46 @@ struct Frame {
   Vec2<T> axis(int k) const { return of_a(k) ? pa.normal(k) : Vec2<T>(-pb.normal(edge(k))); }
 };
 
-// The least of `n·v[i]` over `count` vertices, and the first vertex that realises it.
+// The least of `n·v[i]` over `count` vertices, and the first vertex that realises it. Selected,
+// not branched on: which vertex is deepest does not predict (as `detail::min3` for triangles).
 template <class T>
 T least_along(const Vec2<T>& n, const Local<T>& v, int count, int& deep) {
   T least = n.dot(v[0]);
   deep = 0;
   for (int i = 1; i < count; ++i) {
     const T d = n.dot(v[i]);
-    if (d < least) {
-      least = d;
-      deep = i;
-    }
+    const bool less = d < least;
+    least = std::min(least, d);
+    deep = detail::select_index(less, i, deep);
   }
   return least;
 }
 
+// The least of `n·v[i]` over `count` vertices, without the vertex.
+template <class T>
+T least_value(const Vec2<T>& n, const Local<T>& v, int count) {
+  T least = n.dot(v[0]);
+  for (int i = 1; i < count; ++i) least = std::min(least, n.dot(v[i]));
+  return least;
+}
+
+// Axis k's overlap with the other shape's deepest vertex (first on ties): what the Contact level
+// and the rule's closed vertices read.
+template <class T>
+AxisOverlap<T> overlap_on_axis(const Frame<T>& f, int k) {
+  const bool own_a = f.of_a(k);
+  const int e = f.edge(k);
+  const Vec2<T>& n = own_a ? f.pa.normal(e) : f.pb.normal(e);
+  AxisOverlap<T> o;
+  o.axis = k;
+  o.overlap = n.dot((own_a ? f.a : f.b)[e]) -
+              least_along(n, own_a ? f.b : f.a, own_a ? f.pb.count() : f.pa.count(), o.deep);
+  return o;
+}
+
 // Every axis's overlap (`AxisOverlap`: max over the face's shape minus min over the other's along
-// the face normal; negative: apart along it) with the other shape's deepest vertex.
+// the face normal; negative: apart along it). The deepest vertices are left out (`deep` 0): most
+// pairs need them for one axis at most (`overlap_on_axis`).
 template <class T>
 struct Overlaps {
   std::array<AxisOverlap<T>, 2 * max_polygon_vertices> axis;
@@ -73,8 +96,7 @@ struct Overlaps {
       const Local<T>& other = own_a ? f.b : f.a;
       AxisOverlap<T>& o = axis[static_cast<std::size_t>(k)];
       o.axis = k;
-      o.overlap =
-          n.dot(own[e]) - least_along(n, other, own_a ? f.pb.count() : f.pa.count(), o.deep);
+      o.overlap = n.dot(own[e]) - least_value(n, other, own_a ? f.pb.count() : f.pa.count());
     }
     best_a = least_in(0, f.pa.count(), ~0u);
     best_b = least_in(f.pa.count(), f.axes(), ~0u);
@@ -83,8 +105,11 @@ struct Overlaps {
   // The least of axes [from, to) whose bit is set in `mask` (first on ties); −1: none.
   int least_in(int from, int to, unsigned mask) const {
     int best = -1;
+    T least = 0;
     for (int k = from; k < to; ++k) {
-      if (((mask >> k) & 1u) != 0 && (best < 0 || axis[k].overlap < axis[best].overlap)) best = k;
+      const bool take = ((mask >> k) & 1u) != 0 && (best < 0 || axis[k].overlap < least);
+      least = take ? axis[k].overlap : least;
+      best = detail::select_index(take, k, best);
     }
     return best;
   }
@@ -235,10 +260,8 @@ void clip_manifold(const Frame<T>& f, int k, T margin, Manifold<T>& m) {
   T most = n.dot(ip.normal(0));
   for (int j = 1; j < ip.count(); ++j) {
     const T d = n.dot(ip.normal(j));
-    if (d < most) {
-      most = d;
-      inc = j;
-    }
+    inc = detail::select_index(d < most, j, inc);
+    most = std::min(most, d);
   }
   m.incident_edge = static_cast<std::uint8_t>(ip.input_edge(inc));
 
@@ -263,25 +286,30 @@ void clip_manifold(const Frame<T>& f, int k, T margin, Manifold<T>& m) {
     const bool cut = ends[end].side != ClipSide::None;
     const Vec2<T> p = cut ? Vec2<T>(p0 + ends[end].along * (p1 - p0)) : *vertex_point[end];
     const T separation = n.dot(p) - front;
-    if (separation > margin) continue;
-    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count++)];
+    // Written into the next slot whether kept or not, counted only when within the margin (as
+    // `detail::clip_manifold`: whether an end lies beyond it does not predict).
+    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
     out.point = p + f.origin;
     out.separation = separation;
     out.key = keys.key(end, ends[end].side);
+    m.point_count += static_cast<int>(separation <= margin);
   }
 }
 
 // True when axis k is allowed by the masks: its edge not internal, its deepest vertex (of the
 // other shape) not closed.
 template <class T>
-bool axis_allowed(const Frame<T>& f, const ConvexQuery<T>& q, const AxisOverlap<T>& ax) {
-  const bool own_a = f.of_a(ax.axis);
+bool axis_allowed(const Frame<T>& f, const ConvexQuery<T>& q, int k) {
+  const bool own_a = f.of_a(k);
   const Polygon<T>& own = own_a ? f.pa : f.pb;
   const Polygon<T>& other = own_a ? f.pb : f.pa;
   const ShapeMasks& own_masks = own_a ? q.masks_a : q.masks_b;
   const ShapeMasks& other_masks = own_a ? q.masks_b : q.masks_a;
-  return ((own_masks.edges >> own.input_edge(f.edge(ax.axis))) & 1) == 0 &&
-         ((other_masks.closed_vertices >> other.input_vertex(ax.deep)) & 1) == 0;
+  if (((own_masks.edges >> own.input_edge(f.edge(k))) & 1) != 0) return false;
+  // The deep vertex is looked for only when the other shape has closed vertices at all.
+  if (other_masks.closed_vertices == 0) return true;
+  const int deep = overlap_on_axis(f, k).deep;
+  return ((other_masks.closed_vertices >> other.input_vertex(deep)) & 1) == 0;
 }
 
 // What one shape's edges say to the rule (bits by CCW edge), as `detail::edge_bits` for triangles.
@@ -328,7 +356,7 @@ UsableAxes<T> usable_axes(const Frame<T>& f, const ConvexQuery<T>& q, const Over
   const int na = f.pa.count();
   unsigned allowed = 0;
   for (int k = 0; k < f.axes(); ++k) {
-    allowed |= static_cast<unsigned>(axis_allowed(f, q, o.axis[k])) << k;
+    allowed |= static_cast<unsigned>(axis_allowed(f, q, k)) << k;
   }
   const EdgeBits a = edge_bits(f.pa, f.a, f.pb, f.b, reach);
   const EdgeBits b = edge_bits(f.pb, f.b, f.pa, f.a, reach);
@@ -360,8 +388,7 @@ Result<T> collide(const Polygon<T>& pa, const Polygon<T>& pb, const ConvexQuery<
   bool no_usable_axis = false;
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
   if ((q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
-      !(axis_allowed(f, q, least) &&
-        (reference == o.least || axis_allowed(f, q, o.axis[reference])))) {
+      !(axis_allowed(f, q, o.least) && (reference == o.least || axis_allowed(f, q, reference)))) {
     const UsableAxes<T> u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
     if (u.any()) {
@@ -386,7 +413,9 @@ Result<T> collide(const Polygon<T>& pa, const Polygon<T>& pb, const ConvexQuery<
     fill_apart(f, q, least, in_band ? &near : nullptr, r);
   } else {
     const Level level = q.level == Level::Manifold && !q.witnesses ? Level::Depth : q.level;
-    fill_from_axis(f, level, o.axis[answer_axis], r);
+    fill_from_axis(f, level,
+                   level >= Level::Contact ? overlap_on_axis(f, answer_axis) : o.axis[answer_axis],
+                   r);
   }
   if (q.level != Level::Manifold) return r;
   if (no_usable_axis || -o.axis[reference].overlap > q.margin) {
@@ -411,44 +440,37 @@ struct CenterPlace {
   T signed_distance = 0;
 };
 
+// The nearest point lies on the face the centre lies farthest beyond (for a strictly convex
+// polygon and a centre outside it: were it a vertex of another face, one of that vertex's two
+// faces would lie farther, its normal being nearer the direction from the vertex to the centre),
+// so that face alone is searched, as `b2CollidePolygonAndCircle` does.
 template <class T>
 CenterPlace<T> place_center(const Polygon<T>& p, const Local<T>& v, const Vec2<T>& c) {
   CenterPlace<T> out;
   T farthest = p.normal(0).dot(c - v[0]);
   for (int e = 1; e < p.count(); ++e) {
     const T s = p.normal(e).dot(c - v[e]);
-    if (s > farthest) {
-      farthest = s;
-      out.best_face = e;
-    }
+    out.best_face = detail::select_index(s > farthest, e, out.best_face);
+    farthest = std::max(farthest, s);
   }
-  out.index = out.best_face;
-  out.normal = p.normal(out.best_face);
+  const int e = out.best_face;
+  out.index = e;
+  out.normal = p.normal(e);
   out.signed_distance = farthest;
   out.nearest = c - farthest * out.normal;
   if (farthest <= 0) return out;  // inside: the nearest face line
-  // Outside: the nearest point over every segment (a face's interior keeps its own normal and
-  // its line's distance, the product with the most accurate digits).
-  T best_sq = -1;
-  for (int e = 0; e < p.count(); ++e) {
-    Feature::Type type;
-    int end;
-    const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
-    const T sq = (c - on).squaredNorm();
-    if (best_sq >= 0 && !(sq < best_sq)) continue;
-    best_sq = sq;
-    out.type = type;
-    out.nearest = on;
-    if (type == Feature::Type::Edge) {
-      out.index = e;
-      out.normal = p.normal(e);
-      out.signed_distance = p.normal(e).dot(c - v[e]);
-    } else {
-      out.index = end ? p.next(e) : e;
-      out.signed_distance = std::sqrt(sq);
-      out.normal = (c - on) / out.signed_distance;
-    }
-  }
+  Feature::Type type;
+  int end;
+  const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
+  if (type == Feature::Type::Edge) return out;  // the face's interior: its normal, its distance
+  const T sq = (c - on).squaredNorm();
+  out.type = type;
+  out.nearest = on;
+  out.index = end ? p.next(e) : e;
+  out.signed_distance = std::sqrt(sq);
+  // A centre on the vertex itself (its face's line rounded it outside) has no direction of its
+  // own: the face's normal, a direction of the vertex's normal cone.
+  out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(e);
   return out;
 }
 

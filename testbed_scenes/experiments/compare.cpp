@@ -61,9 +61,18 @@ double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetr
 
 int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
-std::vector<box2d::Backend> in_world_backends(bool quick) {
+std::vector<box2d::Backend> compare_backends(bool quick) {
   if (!quick) return {std::begin(box2d::all_backends), std::end(box2d::all_backends)};
   return {box2d::Backend::Dyop, box2d::Backend::Box2D};
+}
+
+bool left_out_of_quick_sections(const std::string& name) {
+  return name == "rain-tall" || name == "tumbler";
+}
+
+std::vector<box2d::Backend> in_world_backends(bool quick) {
+  if (!quick) return compare_backends(false);
+  return {box2d::Backend::Dyop};
 }
 
 std::vector<const scenes::SceneInfo*> selected_scenes(const CompareOptions& options) {
@@ -82,11 +91,12 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
   CompareRun run;
   run.options = options;
   const std::vector<const scenes::SceneInfo*> scenes = selected_scenes(options);
-  const int total = static_cast<int>(scenes.size()) * box2d::backend_count;
+  const std::vector<box2d::Backend> backends = compare_backends(options.quick);
+  const int total = static_cast<int>(scenes.size() * backends.size());
   int done = 0;
   for (const scenes::SceneInfo* s : scenes) {
     const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
-    for (box2d::Backend b : box2d::all_backends) {
+    for (box2d::Backend b : backends) {
       const double start = elapsed();
       scenes::Drawing final_state;
       const bool snapshot = b == box2d::Backend::Dyop;

@@ -37,10 +37,18 @@ struct CompareOptions {
   box2d::Config skips;
 };
 
-/// The backends of the in-world section: every backend in a full run; `--quick` (the main
-/// command's overview, kept short) keeps `dyop`, what a user installs, and `box2d` (Box2D's code
-/// through the plug-in: what the plug-in's path itself costs).
+/// The backends of the main table: every backend in a full run; `--quick` (the main command's
+/// overview, kept to seconds) keeps `dyop`, what a user installs, and `box2d` (Box2D's own
+/// `b2CollidePolygons` through the plug-in: the yardstick of the summary's depth error).
+std::vector<box2d::Backend> compare_backends(bool quick);
+
+/// The backends of the in-world section: every backend in a full run; `--quick` keeps `dyop`
+/// (what the summary's wall times are).
 std::vector<box2d::Backend> in_world_backends(bool quick);
+
+/// True when `--quick`'s in-world and viewer sections leave scene `name` out: the two longest
+/// (`rain-tall`, `tumbler`), whose figures the main table has; the full run has every scene.
+bool left_out_of_quick_sections(const std::string& name);
 
 /// Timed repetitions of the Figure-7 experiment (each figure is their median).
 int paper_repetitions(bool quick);

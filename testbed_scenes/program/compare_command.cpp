@@ -11,6 +11,7 @@
 #include "program/commands.hpp"
 #include "report/compare_report.hpp"
 #include "report/compare_section.hpp"
+#include "report/compare_summary.hpp"
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "report/report_directory.hpp"
@@ -38,6 +39,8 @@ int run_compare_command(const CompareOptions& options, std::ostream& out, std::o
     err << "dyop compare: " << e.what() << '\n';
     return exit_io_error;
   }
+  for (const std::string& line : summary_lines(comparison)) out << line << '\n';
+  out << '\n';
   write_compare_table(comparison.main, out);
   for (const auto& section : comparison.sections) {
     if (section->measured()) section->write_tables(out);
@@ -62,7 +65,10 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       "Run every scene under every backend, and the skip section (pyramid, rain, tumbler, mixed "
       "with every skip off and on); print the tables and write a report (Markdown, CSV, SVG "
       "charts with gnuplot, scene snapshots)");
-  cmd->add_flag("--quick", options->quick, "Short runs (5 s of simulated time per Box2D scene)");
+  cmd->add_flag("--quick", options->quick,
+                "Short runs: 5 s of simulated time per Box2D scene, the main table under dyop and "
+                "box2d, the in-world section under dyop, and without --section the skip, threads "
+                "and recycling sections left out");
   cmd->add_option("--out", options->out_dir, "Report directory")->capture_default_str();
   CLI::Option* steps_option =
       cmd->add_option("--steps", *steps, "Steps of every scene (default: the catalogue's)")

@@ -110,10 +110,10 @@ std::string format_result_line(int row, const Result<double>& r) {
                                       : "no answer: the method gave a non-finite value");
   }
   const bool overlap = r.status != Status::Separated;
-  const bool penetrating = r.status == Status::Penetrating;
+  // The method's normal whatever the status: a user of distances wants the direction that
+  // separates a pair apart or touching as much as the one that separates a penetrating pair.
   return std::to_string(row) + ",ok," + (overlap ? "1," : "0,") + number(r.depth) + "," +
-         number(r.separation) + "," + number(penetrating ? r.normal.x() : 0.0) + "," +
-         number(penetrating ? r.normal.y() : 0.0) + ",";
+         number(r.separation) + "," + number(r.normal.x()) + "," + number(r.normal.y()) + ",";
 }
 
 std::string format_error_line(int row, std::string_view message) {

@@ -6,8 +6,9 @@
 /// PQR, world coordinates, any winding). Blank lines and lines starting with `#` are skipped.
 /// Output: the header `row,status,overlap,depth,separation,nx,ny,message`, one line per data line
 /// in input order; `row` is the 1-based input line number, `status` is `ok` or `error`, numbers
-/// have 17 significant digits, `nx,ny` is 0,0 unless penetrating, and an error line says in
-/// `message` what is wrong with that line.
+/// have 17 significant digits, `nx,ny` is the method's normal (`Result::normal`: unit, A to B,
+/// for pairs apart and touching too; docs/testbed.md says what each method gives), and an error
+/// line says in `message` what is wrong with that line.
 
 #include <array>
 #include <string>

@@ -24,7 +24,10 @@ const char* const kTerminal = "svg size 1000,520 dynamic font 'sans,11' backgrou
 class MainCharts {
  public:
   explicit MainCharts(ReportFiles& files)
-      : files_(files), dir_(files.dir), run_(files.comparison.main) {}
+      : files_(files),
+        dir_(files.dir),
+        run_(files.comparison.main),
+        backends_(experiments::compare_backends(run_.options.quick)) {}
 
   void chart(const std::string& name, const std::string& terminal, const std::string& body) {
     files_.charts.draw(dir_, name, terminal, body);
@@ -34,11 +37,11 @@ class MainCharts {
     // Time per method: clustered bars, scenes along x, one bar per backend.
     dir_.write("time_per_method.dat", [&](std::ostream& o) {
       o << "scene";
-      for (box2d::Backend b : box2d::all_backends) o << ' ' << box2d::name(b);
+      for (box2d::Backend b : backends_) o << ' ' << box2d::name(b);
       o << '\n';
       for (const std::string& s : scene_names(run_)) {
         std::vector<double> times;
-        for (box2d::Backend b : box2d::all_backends) {
+        for (box2d::Backend b : backends_) {
           const SceneMetrics* m = row(run_, s, b);
           times.push_back(m ? m->narrowphase_ns_per_pair : kMissing);
         }
@@ -52,13 +55,13 @@ class MainCharts {
          << "set style fill solid 0.85 border -1\nset logscale y\nset grid ytics\n"
          << "set ylabel 'ns per pair (log scale)'\nset xtics rotate by -25\n"
          << "set key outside right top\nset yrange [1:*]\n"
-         << "plot for [i=2:" << box2d::backend_count + 1 << "] "
-         << dir_.quoted("time_per_method.dat") << " using i:xtic(1) title columnheader(i)\n";
+         << "plot for [i=2:" << backends_.size() + 1 << "] " << dir_.quoted("time_per_method.dat")
+         << " using i:xtic(1) title columnheader(i)\n";
     chart("time_per_method", kTerminal, bars.str());
 
     // Time against error: one point per scene and backend, one colour per backend.
     dir_.write("time_vs_error.dat", [&](std::ostream& o) {
-      for (box2d::Backend b : box2d::all_backends) {
+      for (box2d::Backend b : backends_) {
         o << "# " << box2d::name(b) << ": ns_per_pair pd_error_max scene\n";
         for (const SceneMetrics& m : run_.rows) {
           if (m.runner != b) continue;
@@ -75,10 +78,10 @@ class MainCharts {
             << "set logscale xy\nset grid\nset xlabel 'ns per pair'\n"
             << "set ylabel 'largest |depth - exact depth| (m)'\nset key outside right top\n"
             << "plot ";
-    for (int i = 0; i < box2d::backend_count; ++i) {
+    for (std::size_t i = 0; i < backends_.size(); ++i) {
       scatter << (i ? ", " : "") << dir_.quoted("time_vs_error.dat") << " index " << i
               << " using 1:2 with points pt " << 5 + 2 * (i % 3) << " ps 1.3 title '"
-              << box2d::name(box2d::all_backends[i]) << "'";
+              << box2d::name(backends_[i]) << "'";
     }
     scatter << '\n';
     chart("time_vs_error", kTerminal, scatter.str());
@@ -88,6 +91,7 @@ class MainCharts {
   ReportFiles& files_;
   ReportDirectory& dir_;
   const CompareRun& run_;
+  const std::vector<box2d::Backend> backends_;  // the main table's, in its order
 };
 
 }  // namespace

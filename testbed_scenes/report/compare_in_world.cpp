@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 #include "experiments/progress.hpp"
@@ -56,6 +57,7 @@ void InWorldSection::run(const SectionContext& c) {
   const int reps = experiments::in_world_repetitions(c.options.quick);
   for (const scenes::SceneInfo* s : c.scenes) {
     if (std::string(s->name) == "paper") continue;  // no Box2D world
+    if (c.options.quick && experiments::left_out_of_quick_sections(s->name)) continue;
     const int steps = c.steps(*s);
     for (box2d::Backend b : experiments::in_world_backends(c.options.quick)) {
       const double start = c.elapsed();
@@ -153,6 +155,14 @@ void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const
 
 std::string InWorldSection::files() const {
   return "`inworld.csv` (every scene and backend against Box2D's own contact)";
+}
+
+void InWorldSection::summarize(SummaryFigures& figures) const {
+  for (const InWorldRatio& r : rows_) {
+    if (r.backend == box2d::Backend::Dyop) {
+      figures.wall_times.push_back({r.scene, r.narrowphase_ratio(), r.step_ratio()});
+    }
+  }
 }
 
 }  // namespace dyop::report

@@ -22,6 +22,7 @@ class InWorldSection : public CompareSection {
   void write_files(ReportDirectory& dir, Charts& charts) const override;
   void write_markdown(std::ostream& o, const Charts& charts) const override;
   std::string files() const override;
+  void summarize(SummaryFigures& figures) const override;
 
   /// One row per scene and backend, in run order.
   const std::vector<experiments::InWorldRatio>& rows() const { return rows_; }

@@ -3,6 +3,7 @@
 #include <thread>
 
 #include "report/compare_report_files.hpp"
+#include "report/compare_summary.hpp"
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "report/metrics_io.hpp"
@@ -21,7 +22,8 @@ class Markdown {
 
   void report(std::ostream& o) const {
     const CompareOptions& opt = run_.options;
-    o << "# DyOP-PD: every scene under every narrow phase\n\n"
+    for (const std::string& line : summary_lines(comparison_)) o << line << '\n';
+    o << "\n# DyOP-PD: every scene under every narrow phase\n\n"
       << "`dyop compare" << (opt.quick ? " --quick" : "") << "`, seed " << opt.seed << ": "
       << run_.rows.size() << " runs in the main table, " << fmt("%.1f", comparison_.seconds)
       << " s with its sections, on " << std::thread::hardware_concurrency()

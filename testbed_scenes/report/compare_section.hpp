@@ -17,6 +17,8 @@
 
 namespace dyop::report {
 
+struct SummaryFigures;  // report/compare_summary.hpp
+
 /// What a section runs with: the command's options, the scenes selected (catalogue order), and
 /// where progress lines go.
 struct SectionContext {
@@ -64,8 +66,13 @@ class CompareSection {
   /// Its files for `report.md`'s file list, e.g. "`slide.csv` (every slider under every
   /// runner)".
   virtual std::string files() const = 0;
+  /// True when `--quick` runs it without being named by `--section` (the main command's run is
+  /// kept to seconds; the full run has every section).
+  virtual bool in_quick_run() const { return true; }
   /// Its lines of `report.md`'s Problems list (none by default).
   virtual void problems(std::vector<std::string>& lines) const { (void)lines; }
+  /// Its figures for the summary the command opens with (none by default).
+  virtual void summarize(SummaryFigures& figures) const { (void)figures; }
 };
 
 /// The sections, in the order they run and are reported: the one list of them.

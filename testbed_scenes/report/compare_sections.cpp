@@ -64,7 +64,10 @@ Comparison run_comparison(const experiments::CompareOptions& options, std::ostre
   c.sections = make_compare_sections();
   const std::vector<std::string>& only = options.sections;
   for (const auto& s : c.sections) {
-    if (only.empty() || std::find(only.begin(), only.end(), s->section_name()) != only.end()) {
+    const bool runs = only.empty()
+                          ? !options.quick || s->in_quick_run()
+                          : std::find(only.begin(), only.end(), s->section_name()) != only.end();
+    if (runs) {
       s->run(context);
     }
   }

@@ -36,6 +36,7 @@ std::uint64_t skipped(const SceneMetrics& m, box2d::Skip why) {
 class SkipSection : public CompareSection {
  public:
   const char* section_name() const override { return "skips"; }
+  bool in_quick_run() const override { return false; }
   void run(const SectionContext& c) override {
     using experiments::detail::fixed;
     quick_ = c.options.quick;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "report/compare_section.hpp"
+#include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/records.hpp"
 #include "report/svg.hpp"
@@ -84,6 +85,23 @@ class SlideSection : public CompareSection {
         o << " ![" << p.scene << ", " << runner << "](" << p.scene << "_" << runner << ".svg) |";
       }
       o << "\n\n";
+    }
+  }
+
+  // Each part's sliding bodies under Box2D's own contact and under `dyop`, when both ran.
+  void summarize(SummaryFigures& figures) const override {
+    for (const Part& p : parts_) {
+      const scenes::SlideFigures* own = nullptr;
+      const scenes::SlideFigures* plugin = nullptr;
+      for (const SlideRun& r : p.runs) {
+        if (!r.metrics.slide) continue;
+        if (!r.metrics.runner) own = &*r.metrics.slide;
+        if (r.metrics.runner == box2d::Backend::Dyop) plugin = &*r.metrics.slide;
+      }
+      if (own && plugin) {
+        figures.glides.push_back({p.scene, own->max_vertical_speed, own->min_travel,
+                                  plugin->max_vertical_speed, plugin->min_travel});
+      }
     }
   }
 

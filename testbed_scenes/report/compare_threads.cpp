@@ -17,6 +17,7 @@ constexpr int kQuickRuns = 3;
 class ThreadSection : public CompareSection {
  public:
   const char* section_name() const override { return "threads"; }
+  bool in_quick_run() const override { return false; }
   void run(const SectionContext& c) override {
     options_.scene = "rain";
     if (!c.selected(options_.scene)) return;

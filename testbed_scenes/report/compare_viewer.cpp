@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "experiments/compare.hpp"
 #include "experiments/lockstep_recording.hpp"
 #include "report/compare_section.hpp"
+#include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/viewer_page.hpp"
 
@@ -32,6 +34,7 @@ class ViewerSection : public CompareSection {
   void run(const SectionContext& c) override {
     out_dir_ = c.options.out_dir;
     for (const scenes::SceneInfo* s : c.scenes) {
+      if (c.options.quick && experiments::left_out_of_quick_sections(s->name)) continue;
       const double start = c.elapsed();
       const experiments::LockstepRecording r =
           experiments::record_lockstep(s->name, {std::nullopt, box2d::Backend::Dyop}, c.steps(*s),
@@ -96,6 +99,8 @@ class ViewerSection : public CompareSection {
   std::string files() const override {
     return "`view_<scene>.html` (viewer pages: Box2D's own contact against dyop)";
   }
+
+  void summarize(SummaryFigures& figures) const override { figures.viewer_pages = true; }
 
  private:
   std::string out_dir_;

@@ -26,6 +26,7 @@ WorldBuild build_mixed(World& world, workloads::Random& rng);
 WorldBuild build_slide(World& world, workloads::Random& rng);
 WorldBuild build_tiles(World& world, workloads::Random& rng);
 WorldBuild build_tile_map(World& world, workloads::Random& rng);
+WorldBuild build_crowd(World& world, workloads::Random& rng);
 
 /// The builder of the catalogue's Box2D scene `name`, or nullptr (unknown, or `paper`, which has
 /// no Box2D world). Seed its `workloads::Random` with the scene's seed, as `make_scene` does.
@@ -35,6 +36,16 @@ const WorldBuilder* find_builder(std::string_view name);
 /// lie 0.75 to 1 × `radius` from the body origin, at angles at least 0.5 rad apart (so no sliver).
 b2Body* add_random_triangle(World& world, workloads::Random& rng, const b2Vec2& position,
                             double radius);
+
+/// A fixture of `shape` on `body`, of the scenes' default material (`Material`).
+inline void add_solid(b2Body* body, const b2Shape& shape) {
+  const Material material;
+  b2FixtureDef def;
+  def.shape = &shape;
+  def.density = material.density;
+  def.friction = material.friction;
+  body->CreateFixture(&def);
+}
 
 /// Up to ±`amount` metres, for placement jitter.
 inline float jitter(workloads::Random& rng, double amount) { return rng.uniformf(-amount, amount); }

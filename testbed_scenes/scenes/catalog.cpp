@@ -47,10 +47,14 @@ const std::vector<Entry>& entries() {
       {{"slivers-far", "the slivers scene moved 10 km from the origin", 600, 300},
        detail::build_slivers_far},
       {{"mixed",
-        "triangles, boxes and circles on an edge ground: only triangle pairs use the "
-        "plug-in",
+        "triangles, boxes and circles on an edge ground: the edges keep Box2D's own contacts",
         600, 300},
        detail::build_mixed},
+      {{"crowd",
+        "600 SetAsBox boxes, hexagons, circles and triangles poured into a bin of triangle "
+        "fixtures: every pair family on a triangulated ground",
+        600, 300},
+       detail::build_crowd},
       {{"slide",
         "boxes, L bodies and wheels launched along grounds of triangulated cells, a box resting "
         "across a junction",

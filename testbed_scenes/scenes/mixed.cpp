@@ -1,5 +1,5 @@
-// `mixed`: triangles with boxes and circles on a ground of edges. Only triangle–triangle pairs
-// go through the plug-in's backend; everything else keeps Box2D's own contacts.
+// `mixed`: triangles with boxes and circles on a ground of edges. Triangle pairs go to the
+// plug-in's backend, boxes and circles to the exact solver; the edges keep Box2D's own contacts.
 #include "scenes/builders.hpp"
 
 namespace dyop::scenes::detail {
@@ -9,16 +9,6 @@ void add_edge(b2Body* body, const b2Vec2& a, const b2Vec2& b) {
   b2EdgeShape edge;
   edge.SetTwoSided(a, b);
   body->CreateFixture(&edge, 0.0f);
-}
-
-// A fixture of the scenes' default material.
-void add_solid(b2Body* body, const b2Shape& shape) {
-  const Material material;
-  b2FixtureDef def;
-  def.shape = &shape;
-  def.density = material.density;
-  def.friction = material.friction;
-  body->CreateFixture(&def);
 }
 
 }  // namespace

@@ -24,9 +24,16 @@ struct SkipSwitch {
 /// Number of switches: the fields of `box2d::Config`.
 inline constexpr int skip_switch_count = 3;
 
-// A skip added to `box2d::Config` needs its switch below (`internal_edges` and
-// `recycle_distance`, the two more fields, are not skips: they change the answer).
-static_assert(sizeof(box2d::Config) == sizeof(float) + (skip_switch_count + 1) * sizeof(bool),
+// A skip added to `box2d::Config` needs its switch below (`internal_edges`, `recycle_distance`
+// and `triangles_only`, the three more fields, are not skips: they change the answer). The
+// layout `Config` has with exactly these fields:
+struct ConfigFields {
+  bool skips[skip_switch_count];
+  bool internal_edges;
+  float recycle_distance;
+  bool triangles_only;
+};
+static_assert(sizeof(box2d::Config) == sizeof(ConfigFields),
               "every box2d::Config skip has a --skip switch");
 
 /// Every switch, in `box2d::Config`'s field order.

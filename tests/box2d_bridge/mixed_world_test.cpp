@@ -1,5 +1,7 @@
-// A world of circles, boxes, a pentagon, edges and triangles: the plug-in answers triangle pairs
-// and leaves every other pair exactly as Box2D's own code answers it.
+// A world of circles, boxes, a pentagon, edges and triangles: the plug-in answers every polygon
+// pair and polygon–circle pair exactly as its single-pair entry points do (`collide_polygons`,
+// `collide_polygon_and_circle`: the exact solver, or Box2D's own functions under `Backend::Box2D`),
+// and leaves circle–circle and edge pairs to Box2D's own contacts.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -33,47 +35,58 @@ bool same(const b2Manifold& x, const b2Manifold& y) {
 }
 
 // Checks every manifold right after Box2D evaluated it (PreSolve runs then, with the transforms
-// Evaluate saw): polygon pairs with a side that is not a triangle must be b2CollidePolygons' own,
-// bit for bit, and triangle pairs the plug-in's `collide_polygons` (but for Lin–Canny's).
+// Evaluate saw): every pair the plug-in takes must be its single-pair entry points' answer, bit
+// for bit (triangle pairs but for Lin–Canny's, which starts from the contact's own cache).
 class Checker : public b2ContactListener {
  public:
-  explicit Checker(Backend backend) : backend_(backend) {}
+  Checker(Backend backend, const Config& config) : backend_(backend), config_(config) {}
 
   void PreSolve(b2Contact* contact, const b2Manifold*) override {
     const b2Fixture* fa = contact->GetFixtureA();
     const b2Fixture* fb = contact->GetFixtureB();
+    b2Manifold expected;
+    if (fa->GetType() == b2Shape::e_polygon && fb->GetType() == b2Shape::e_circle) {
+      ++circle_pairs;
+      collide_polygon_and_circle(
+          &expected, backend_, *static_cast<const b2PolygonShape*>(fa->GetShape()),
+          fa->GetBody()->GetTransform(), *static_cast<const b2CircleShape*>(fb->GetShape()),
+          fb->GetBody()->GetTransform(), nullptr, config_);
+      ++own_evaluations;
+      own_manifolds += expected.pointCount > 0;
+      if (!same(*contact->GetManifold(), expected)) ++mismatches;
+      return;
+    }
     if (fa->GetType() != b2Shape::e_polygon || fb->GetType() != b2Shape::e_polygon) {
-      ++other_pairs;  // circles and edges: Box2D's own contact classes, never the plug-in's
+      ++other_pairs;  // circles with circles, and edges: Box2D's own contact classes
       return;
     }
     const auto* a = static_cast<const b2PolygonShape*>(fa->GetShape());
     const auto* b = static_cast<const b2PolygonShape*>(fb->GetShape());
     const b2Transform& xa = fa->GetBody()->GetTransform();
     const b2Transform& xb = fb->GetBody()->GetTransform();
-    b2Manifold expected;
-    if (is_triangle(fa) && is_triangle(fb)) {
-      ++triangle_pairs;
-      // Lin–Canny starts from the contact's own cache, which this check cannot share.
-      if (backend_ == Backend::LinCanny) return;
-      collide_polygons(&expected, backend_, *a, xa, *b, xb);
-      ++own_evaluations;  // counted in stats() too: the test takes them out again
-      own_manifolds += expected.pointCount > 0;
-    } else {
-      ++polygon_pairs;
-      b2CollidePolygons(&expected, a, xa, b, xb);
-    }
+    const bool triangles = is_triangle(fa) && is_triangle(fb);
+    triangle_pairs += triangles;
+    polygon_pairs += !triangles;
+    // Lin–Canny starts from the contact's own cache, which this check cannot share.
+    if (triangles && backend_ == Backend::LinCanny) return;
+    collide_polygons(&expected, backend_, *a, xa, *b, xb, nullptr, config_);
+    ++(triangles ? own_triangle_evaluations : own_evaluations);  // counted in stats() too: the
+    own_manifolds += expected.pointCount > 0;                    // test takes them out again
     if (!same(*contact->GetManifold(), expected)) ++mismatches;
   }
 
   int triangle_pairs = 0;
   int polygon_pairs = 0;
+  int circle_pairs = 0;
   int other_pairs = 0;
   int mismatches = 0;
+  std::uint64_t own_triangle_evaluations = 0;
   std::uint64_t own_evaluations = 0;
   std::uint64_t own_manifolds = 0;
 
  private:
   Backend backend_;
+  Config config_;
 };
 
 // Edges for ground, a static box, and dynamic circles, boxes, a pentagon and triangles dropped
@@ -137,16 +150,16 @@ class MixedWorld : public ::testing::TestWithParam<Backend> {
   // internal_edges_in_worlds_test. It computes every manifold afresh: recycling is off here too,
   // and tested in recycling_test.
   void SetUp() override {
-    Config config;
     config.internal_edges = false;
     config.recycle_distance = 0;
     ASSERT_TRUE(install(GetParam(), config).ok());
   }
+  Config config;
   void TearDown() override { EXPECT_TRUE(uninstall().ok()); }
 };
 
-TEST_P(MixedWorld, NonTrianglePairsKeepBox2DsOwnResults) {
-  Checker checker(GetParam());
+TEST_P(MixedWorld, EveryPairIsTheSinglePairEntryPointsAnswer) {
+  Checker checker(GetParam(), config);
   {
     World world;
     world->SetContactListener(&checker);
@@ -154,23 +167,28 @@ TEST_P(MixedWorld, NonTrianglePairsKeepBox2DsOwnResults) {
     for (int i = 0; i < 4 * kStepsPerSecond; ++i) world.step();
   }
   const Stats s = stats();
-  const std::uint64_t triangle_pairs = s.triangles(GetParam()) - checker.own_evaluations;
+  const std::uint64_t triangle_pairs = s.triangles(GetParam()) - checker.own_triangle_evaluations;
   const std::uint64_t manifolds = s.manifolds - checker.own_manifolds;
+  const std::uint64_t beyond = s.polygon_pairs + s.circle_pairs - checker.own_evaluations;
   std::cout << name(GetParam()) << ": touching triangle pairs " << checker.triangle_pairs
-            << ", other polygon pairs " << checker.polygon_pairs << ", circle/edge pairs "
-            << checker.other_pairs << "; stats: triangle pairs " << triangle_pairs
-            << ", polygon pairs to Box2D " << s.polygon_pairs << ", manifolds " << manifolds
-            << ", fallbacks " << s.fallbacks << "\n";
+            << ", other polygon pairs " << checker.polygon_pairs << ", polygon-circle pairs "
+            << checker.circle_pairs << ", circle/edge pairs " << checker.other_pairs
+            << "; stats: triangle pairs " << triangle_pairs << ", other pairs " << beyond
+            << ", manifolds " << manifolds << ", fallbacks " << s.fallbacks << "\n";
   EXPECT_EQ(checker.mismatches, 0);
   EXPECT_GT(checker.triangle_pairs, 0);
   EXPECT_GT(checker.polygon_pairs, 0);
+  EXPECT_GT(checker.circle_pairs, 0);
   EXPECT_GT(checker.other_pairs, 0);
+  // The exact solver answered the pairs beyond triangles, but under Box2D's own backend.
+  EXPECT_EQ(s.exact_pairs == 0, GetParam() == Backend::Box2D);
   // Every pair the plug-in evaluated went where it belongs, and was counted there.
   // Counted where they belong: every touching pair was evaluated (and more, in the broad phase's
   // overlapping pairs that do not touch), and every touching triangle pair had a manifold.
   EXPECT_GE(triangle_pairs, static_cast<std::uint64_t>(checker.triangle_pairs));
-  EXPECT_GE(s.polygon_pairs, static_cast<std::uint64_t>(checker.polygon_pairs));
-  EXPECT_EQ(manifolds, static_cast<std::uint64_t>(checker.triangle_pairs));
+  EXPECT_GE(beyond, static_cast<std::uint64_t>(checker.polygon_pairs + checker.circle_pairs));
+  EXPECT_EQ(manifolds, static_cast<std::uint64_t>(checker.triangle_pairs + checker.polygon_pairs +
+                                                  checker.circle_pairs));
   EXPECT_EQ(s.fallbacks, 0u);
   for (Backend other : all_backends) {
     if (other != GetParam()) {

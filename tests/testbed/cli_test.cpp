@@ -96,9 +96,26 @@ TEST(PairsCommand, EveryInputLineIsAccountedForInOrderWithItsLineNumber) {
   EXPECT_EQ(lines[0], "row,status,overlap,depth,separation,nx,ny,message");
   EXPECT_EQ(lines[1], "2,ok,1,0.5,-0.5,0,-1,");
   EXPECT_EQ(lines[2].rfind("4,error,,,,,,\"expected 12", 0), 0u) << lines[2];
-  EXPECT_EQ(lines[3], "5,ok,0,0,1,0,0,");
+  EXPECT_EQ(lines[3], "5,ok,0,0,1,1,0,");
   EXPECT_EQ(lines[4].rfind("6,error,,,,,,\"triangle ABC", 0), 0u) << lines[4];
   EXPECT_EQ(lines[5].rfind("7,error,,,,,,\"field 12 (ry)", 0), 0u) << lines[5];
+}
+
+// A user of distances wants the direction that separates a pair, as for penetrating pairs: the
+// exact methods give the unit vector from A to B for pairs apart and touching too.
+TEST(PairsCommand, ExactMethodsGiveApartAndTouchingPairsTheUnitDirectionFromAToB) {
+  const std::string input =
+      "0,0, 1,0, 0,1,  2,0, 3,0, 2,1\n"    // line 1: B apart by 1 along +x
+      "0,0, 2,0, 1,1,  0,0, 1,-1, 2,0\n";  // line 2: B touching A's lower edge from below
+  for (const char* name : {"dyop", "sat", "batch"}) {
+    std::istringstream in(input);
+    std::ostringstream out;
+    run_pairs({{method(name)}, false, false}, in, out);
+    const auto lines = lines_of(out.str());
+    ASSERT_EQ(lines.size(), 3u) << name;
+    EXPECT_EQ(lines[1], "1,ok,0,0,1,1,0,") << name;
+    EXPECT_EQ(lines[2], "2,ok,1,0,0,0,-1,") << name;
+  }
 }
 
 TEST(PairsCommand, NumbersHaveSeventeenSignificantDigits) {

@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "report/compare_section.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::scenes {
@@ -31,10 +34,11 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   options.quick = true;
   options.steps = 3;
   options.out_dir = dir.string();
+  options.sections = report::compare_section_names();  // those --quick leaves out too
   std::ostringstream out, err;
   ASSERT_EQ(cli::run_compare_command(options, out, err), 0) << err.str();
 
-  const int runs = static_cast<int>(scene_catalog().size()) * box2d::backend_count;
+  const int runs = static_cast<int>(scene_catalog().size() * compare_backends(true).size());
   EXPECT_NE(err.str().find("[" + std::to_string(runs) + "/" + std::to_string(runs) + "]"),
             std::string::npos)
       << "one progress line per scene and backend";
@@ -89,6 +93,10 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   EXPECT_NE(report.find("## Viewer"), std::string::npos);
   for (const SceneInfo& s : scene_catalog()) {
     const std::string page = "view_" + std::string(s.name) + ".html";
+    if (left_out_of_quick_sections(s.name)) {
+      EXPECT_FALSE(std::filesystem::exists(dir / page)) << page << ": left out of --quick";
+      continue;
+    }
     EXPECT_GT(std::filesystem::file_size(dir / page), 10000u) << page;
     EXPECT_NE(report.find("](" + page + ")"), std::string::npos) << page;
   }
@@ -108,6 +116,84 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
     EXPECT_NE(report.find("not drawn"), std::string::npos);
   }
   if (!HasFailure()) std::filesystem::remove_all(dir);  // kept to look at when something failed
+}
+
+// A point of a chart as gnuplot draws it: where, and whether within the chart's axes ('i'),
+// outside them ('o') or undefined ('u').
+struct PlottedPoint {
+  double x = 0, y = 0;
+  char type = 'u';
+};
+
+// Every point the chart's script `gp` plots, from gnuplot itself: the script run with its
+// terminal replaced by `set table` (which lists each curve's points) and no output file.
+std::vector<PlottedPoint> plotted_points(const std::filesystem::path& gp) {
+  const std::filesystem::path table = gp.string() + ".table", script = gp.string() + ".check";
+  {
+    std::ifstream in(gp);
+    std::ofstream out(script);
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("set terminal", 0) == 0) {
+        out << "set table '" << table.string() << "'\n";
+      } else if (line.rfind("set output", 0) != 0) {
+        out << line << '\n';
+      }
+    }
+  }
+  const std::string command = "gnuplot '" + script.string() + "' >/dev/null 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  std::vector<PlottedPoint> points;
+  std::ifstream in(table);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    PlottedPoint p;
+    if (line.empty() || line[0] == '#' || !(fields >> p.x >> p.y >> p.type)) continue;
+    points.push_back(p);
+  }
+  return points;
+}
+
+// The recycling chart plots, per scene and distance, the narrow phase's and the step's ratio to
+// Box2D's own contact and the kept manifolds' error: every one of them must be drawn, and within
+// the axes (the first distance of each scene was once taken for the legend's title instead).
+TEST(Compare, RecyclingChartDrawsEveryPointWithinItsAxes) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("dyop_recycling_chart_test_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  CompareOptions options;
+  options.quick = true;
+  options.steps = 30;
+  options.scenes = {"pyramid"};
+  options.sections = {"recycling"};
+  options.out_dir = dir.string();
+  std::ostringstream out, err;
+  ASSERT_EQ(cli::run_compare_command(options, out, err), 0) << err.str();
+
+  const std::vector<PlottedPoint> points = plotted_points(dir / "recycling.gp");
+  const auto drawn = [&](double x, double y) {
+    for (const PlottedPoint& p : points) {
+      // The data file has six significant digits, and gnuplot lists what it read.
+      if (p.type == 'i' && std::abs(p.x - x) <= 1e-9 && std::abs(p.y - y) <= 1e-6 * std::abs(y)) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::ifstream data(dir / "recycling.dat");
+  int rows = 0;
+  for (std::string line; std::getline(data, line);) {
+    std::istringstream fields(line);
+    std::string scene;
+    double distance = 0, narrowphase = 0, step = 0, kept = 0;
+    if (!(fields >> scene >> distance >> narrowphase >> step >> kept)) continue;  // not a point
+    ++rows;
+    EXPECT_TRUE(drawn(distance, narrowphase)) << scene << " at " << distance << " mm: narrow phase";
+    EXPECT_TRUE(drawn(distance, step)) << scene << " at " << distance << " mm: step";
+    EXPECT_TRUE(drawn(distance, kept)) << scene << " at " << distance << " mm: kept error";
+  }
+  EXPECT_EQ(rows, 3) << "the quick sweep's three distances";
+  if (!HasFailure()) std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
 #include "report/metrics_io.hpp"
+#include "support/sliders.hpp"
 #include "scenes/scene.hpp"
 #include "experiments/slide_run.hpp"
 
@@ -20,32 +20,18 @@ namespace {
 
 using namespace experiments;  // the experiments these tests run over the scenes
 
-// The bounds for a glide: largest vertical speed (m/s) and smallest travel fraction.
-constexpr double kGlideVerticalSpeed = 0.05;
-constexpr double kGlideTravel = 0.98;
-// A ghost collision: a trip that throws the box up faster than this (m/s).
-constexpr double kTripVerticalSpeed = 0.5;
+using namespace testing;  // the glide bounds and `slider`
+
 // m: a box resting across a junction moves by rounding only.
 constexpr double kRestingJitter = 1e-3;
-// Relative spread of the wheel's travel between launch points (seeds 0-11: 0.87 to 1.06 with the
-// rule on).
-constexpr double kWheelTravelSpread = 0.2;
-constexpr std::uint64_t kSeed = 3;
+constexpr std::uint64_t kSlideSeed = 3;
 
-int full_steps() { return find_scene("slide")->default_steps; }
+int slide_full_steps() { return find_scene("slide")->default_steps; }
 
 box2d::Config rule_on() {
   box2d::Config c = box2d::Config::all();
   c.internal_edges = true;
   return c;
-}
-
-const SliderFigures& slider(const SceneMetrics& m, const std::string& body,
-                            const std::string& ground) {
-  for (const SliderFigures& s : m.slide->sliders) {
-    if (s.body == body && s.ground == ground) return s;
-  }
-  throw std::invalid_argument("no " + body + " on " + ground);
 }
 
 std::string runner_name(const ::testing::TestParamInfo<Runner>& info) {
@@ -57,7 +43,7 @@ std::string runner_name(const ::testing::TestParamInfo<Runner>& info) {
 class EveryRunner : public ::testing::TestWithParam<Runner> {};
 
 TEST_P(EveryRunner, SlideFiguresArePresentAndFinite) {
-  const SceneMetrics m = run_scene("slide", GetParam(), 120, kSeed, rule_on());
+  const SceneMetrics m = run_scene("slide", GetParam(), 120, kSlideSeed, rule_on());
   ASSERT_TRUE(m.slide.has_value());
   EXPECT_EQ(m.slide->sliders.size(), 8u);
   EXPECT_TRUE(all_finite(m));
@@ -101,7 +87,7 @@ TEST(Slide, OtherScenesHaveNoSlideFigures) {
 class ExactBackend : public ::testing::TestWithParam<box2d::Backend> {};
 
 TEST_P(ExactBackend, SlidersGlideOverTriangulatedGroundsWithTheInternalEdgeRule) {
-  const SceneMetrics m = run_scene("slide", GetParam(), full_steps(), kSeed, rule_on());
+  const SceneMetrics m = run_scene("slide", GetParam(), slide_full_steps(), kSlideSeed, rule_on());
   ASSERT_TRUE(m.slide.has_value());
   for (const SliderFigures& s : m.slide->sliders) {
     if (s.rolling) continue;
@@ -113,7 +99,7 @@ TEST_P(ExactBackend, SlidersGlideOverTriangulatedGroundsWithTheInternalEdgeRule)
 }
 
 TEST_P(ExactBackend, RestingBoxStaysAcrossItsJunction) {
-  const SceneMetrics m = run_scene("slide", GetParam(), full_steps(), kSeed, rule_on());
+  const SceneMetrics m = run_scene("slide", GetParam(), slide_full_steps(), kSlideSeed, rule_on());
   ASSERT_TRUE(m.top_displacement.has_value());
   EXPECT_LE(*m.top_displacement, kRestingJitter);
 }
@@ -122,7 +108,7 @@ TEST_P(ExactBackend, RestingBoxStaysAcrossItsJunction) {
 // with the launch point: its travel on cells stays within kWheelTravelSpread of the one-piece
 // ground's, and it is thrown up no faster than there.
 TEST_P(ExactBackend, WheelRollsOverTriangulatedCellsAboutAsOverOnePiece) {
-  const SceneMetrics m = run_scene("slide", GetParam(), full_steps(), kSeed, rule_on());
+  const SceneMetrics m = run_scene("slide", GetParam(), slide_full_steps(), kSlideSeed, rule_on());
   const SliderFigures& one_piece = slider(m, "wheel", "one-piece");
   const SliderFigures& cells = slider(m, "wheel", "diagonal-0.25m");
   EXPECT_NEAR(cells.travel / one_piece.travel, 1.0, kWheelTravelSpread)
@@ -137,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(Slide, ExactBackend,
                          });
 
 TEST(Slide, BoxTripsOnQuarterMetreCellsUnderBox2DsOwnContact) {
-  const SceneMetrics m = run_scene("slide", Runner(), full_steps(), kSeed);
+  const SceneMetrics m = run_scene("slide", Runner(), slide_full_steps(), kSlideSeed);
   const SliderFigures& one_piece = slider(m, "box", "one-piece");
   EXPECT_LE(one_piece.max_vertical_speed, kGlideVerticalSpeed) << "a one-piece ground: a glide";
   EXPECT_GE(one_piece.travel, kGlideTravel);
@@ -156,7 +142,7 @@ TEST(Slide, CompareRunnersStartWithBox2DsOwnContact) {
   ASSERT_EQ(quick.size(), 3u);
   EXPECT_FALSE(quick[0].has_value());
   EXPECT_EQ(slide_runners(false).size(), 1u + box2d::backend_count);
-  const SlideRun r = run_slide(box2d::Backend::Dyop, 10, kSeed, rule_on());
+  const SlideRun r = run_slide(box2d::Backend::Dyop, 10, kSlideSeed, rule_on());
   ASSERT_TRUE(r.metrics.slide.has_value());
   ASSERT_EQ(r.paths.size(), r.metrics.slide->sliders.size());
   for (const SliderPath& p : r.paths) {

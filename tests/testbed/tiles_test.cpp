@@ -5,44 +5,30 @@
 // T-junctions. The `tile-map` scene's crowd glides too.
 #include <gtest/gtest.h>
 
-#include <stdexcept>
 #include <iterator>
 #include <string>
 
 #include "scenes/scene.hpp"
+#include "support/sliders.hpp"
 
 namespace dyop::scenes {
 namespace {
 
-// The bounds for a glide: largest vertical speed (m/s) and smallest travel fraction.
-constexpr double kGlideVerticalSpeed = 0.05;
-constexpr double kGlideTravel = 0.98;
-// A ghost collision: a trip that throws the box up faster than this (m/s).
-constexpr double kTripVerticalSpeed = 0.5;
+using namespace testing;  // the glide bounds and `slider`
+
 // m/s: the wheel's own rolling over its vertices. A 16-gon of 0.4 m rises and falls by
 // r·(1 − cos(π/16)) = 7.7 mm per side; its vertical speed peaks at 0.36 or 0.42 m/s (where its
 // first vertex lands) on every ground under every contact, Box2D's own included; a trip throws it
 // up faster than 1 m/s.
 constexpr double kWheelRollingVerticalSpeed = 0.45;
-// Relative spread of the wheel's travel between grounds and launch points (0.87 to 1.07 of its
-// one-body travel over seeds 0-5 with the rule on), as in `slide`.
-constexpr double kWheelTravelSpread = 0.2;
-constexpr std::uint64_t kSeed = 3;
+constexpr std::uint64_t kTilesSeed = 3;
 const char* const kGrounds[] = {"one-body",         "tiles",         "chunks-8x8", "t-junctions",
                                 "t-junction-tiles", "changing-tiles"};
 
-int full_steps() { return find_scene("tiles")->default_steps; }
-
-const SliderFigures& slider(const SceneMetrics& m, const std::string& body,
-                            const std::string& ground) {
-  for (const SliderFigures& s : m.slide->sliders) {
-    if (s.body == body && s.ground == ground) return s;
-  }
-  throw std::invalid_argument("no " + body + " on " + ground);
-}
+int tiles_full_steps() { return find_scene("tiles")->default_steps; }
 
 TEST(Tiles, EveryGroundHasABoxAnLAndAWheel) {
-  const SceneMetrics m = run_scene("tiles", box2d::Backend::Dyop, 3, kSeed);
+  const SceneMetrics m = run_scene("tiles", box2d::Backend::Dyop, 3, kTilesSeed);
   ASSERT_TRUE(m.slide.has_value());
   EXPECT_EQ(m.slide->sliders.size(), 3 * std::size(kGrounds));
   for (const char* ground : kGrounds) {
@@ -53,7 +39,7 @@ TEST(Tiles, EveryGroundHasABoxAnLAndAWheel) {
 class ExactBackendOnTiles : public ::testing::TestWithParam<box2d::Backend> {};
 
 TEST_P(ExactBackendOnTiles, BoxesAndLBodiesGlideOverEveryTiledGround) {
-  const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
+  const SceneMetrics m = run_scene("tiles", GetParam(), tiles_full_steps(), kTilesSeed);
   for (const char* ground : kGrounds) {
     for (const char* body : {"box", "L"}) {
       SCOPED_TRACE(std::string(body) + " on " + ground);
@@ -70,7 +56,7 @@ TEST_P(ExactBackendOnTiles, BoxesAndLBodiesGlideOverEveryTiledGround) {
 // kWheelTravelSpread of its travel on one body, and it is thrown up no faster than its own rolling
 // does.
 TEST_P(ExactBackendOnTiles, WheelRollsOverEveryTiledGroundAsOverOneBody) {
-  const SceneMetrics m = run_scene("tiles", GetParam(), full_steps(), kSeed);
+  const SceneMetrics m = run_scene("tiles", GetParam(), tiles_full_steps(), kTilesSeed);
   const SliderFigures& one_body = slider(m, "wheel", "one-body");
   for (const char* ground : kGrounds) {
     SCOPED_TRACE(ground);
@@ -87,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(Tiles, ExactBackendOnTiles,
                          });
 
 TEST(Tiles, BoxTripsOnTilesAndTJunctionsUnderBox2DsOwnContact) {
-  const SceneMetrics m = run_scene("tiles", Runner(), full_steps(), kSeed);
+  const SceneMetrics m = run_scene("tiles", Runner(), tiles_full_steps(), kTilesSeed);
   for (const char* ground : {"tiles", "t-junctions"}) {
     SCOPED_TRACE(ground);
     EXPECT_GT(slider(m, "box", ground).max_vertical_speed, kTripVerticalSpeed);
@@ -102,8 +88,8 @@ constexpr double kCrowdLVerticalSpeed = 0.1;
 // The tile map's crowd: every box and L on every lane glides over its tiles as bodies, each
 // contact running the rule at every step (too fast to be kept), with debris falling beside them.
 TEST(TileMap, EverySliderOfTheCrowdGlides) {
-  const SceneMetrics m =
-      run_scene("tile-map", box2d::Backend::Dyop, find_scene("tile-map")->default_steps, kSeed);
+  const SceneMetrics m = run_scene("tile-map", box2d::Backend::Dyop,
+                                   find_scene("tile-map")->default_steps, kTilesSeed);
   ASSERT_TRUE(m.slide.has_value());
   EXPECT_EQ(m.slide->sliders.size(), 48u);
   for (const SliderFigures& s : m.slide->sliders) {

@@ -30,6 +30,7 @@
 /// process-wide registry: call them while no thread steps a world or creates or destroys
 /// fixtures; every other function may run on any thread at any time (docs/box2d-plugin.md).
 
+#include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
 #include <box2d/b2_math.h>
@@ -40,6 +41,7 @@
 #include <optional>
 #include <string_view>
 
+#include "dyop/convex_pair.hpp"
 #include "dyop/method.hpp"
 #include "dyop/result.hpp"
 #include "dyop/triangle.hpp"
@@ -165,6 +167,12 @@ struct Config {
   /// 0: off, bit-identical to the plug-in without it (docs/box2d-plugin.md).
   float recycle_distance = default_recycle_distance;
 
+  /// Only triangle pairs go to the backend, as in version 0.1: other polygon pairs to
+  /// `b2CollidePolygons`, polygon–circle pairs keep Box2D's own contact. Off by default: every
+  /// polygon pair and polygon–circle pair is answered exactly (`dyop::collide`), with the
+  /// internal-edge rule.
+  bool triangles_only = false;
+
   /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }
   /// Every skip off; the internal-edge rule and recycling as by default.
@@ -181,7 +189,7 @@ struct Config {
 inline bool operator==(const Config& x, const Config& y) {
   return x.bounds_early_out == y.bounds_early_out && x.warm_axis == y.warm_axis &&
          x.lin_canny_cache == y.lin_canny_cache && x.internal_edges == y.internal_edges &&
-         x.recycle_distance == y.recycle_distance;
+         x.recycle_distance == y.recycle_distance && x.triangles_only == y.triangles_only;
 }
 
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
@@ -215,7 +223,12 @@ struct ContactMemory {
     /// Two triangles not validated yet: only skips have answered them so far (then `Triangles` or
     /// `InvalidTriangles` once the backend runs).
     UnvalidatedTriangles,
-    Polygons,  ///< a side with more than 3 vertices: `b2CollidePolygons` answers
+    /// A side with more than 3 vertices, both accepted by `Polygon<float>::check`: the exact
+    /// solver answers (`dyop::collide`; `b2CollidePolygons` under `Backend::Box2D` or
+    /// `Config::triangles_only`).
+    Polygons,
+    InvalidPolygons,   ///< a side with more than 3 vertices that `Polygon<float>` refuses: Box2D
+    PolygonAndCircle,  ///< a polygon (A) and a circle (B): `dyop::collide`, or Box2D's own
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
   PairState warm_start;
@@ -227,8 +240,12 @@ struct ContactMemory {
   /// `Config::bounds_early_out`).
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits, then
-  /// B's); a world's contact finds them itself, a caller of `collide_polygons` sets them.
+  /// B's); a world's contact finds them itself, a caller of `collide_polygons` sets them. For a
+  /// pair beyond two triangles, `edges` and `closed_vertices` hold A's masks (`ShapeMasks`, up to
+  /// 8 bits) and `masks_b` B's.
   InternalEdges internal_edges{};
+  /// B's masks of a pair beyond two triangles (`ShapeMasks`; unused for triangle pairs).
+  ShapeMasks masks_b{};
 };
 
 /// Registers the plug-in's contact for polygon–polygon pairs, with `backend` and `config` for
@@ -254,22 +271,42 @@ std::optional<Backend> installed();
 Config installed_config();
 
 /// The plug-in's answer for one polygon pair, exactly what its contact's `Evaluate` computes
-/// with `config`: triangle pairs through `backend`, other polygon pairs through
-/// `b2CollidePolygons`. `memory` is the pair's state from its previous evaluation (updated);
-/// nullptr: nothing remembered, a cold evaluation. Counted in `stats`.
+/// with `config`: triangle pairs through `backend`, other polygon pairs exactly (`dyop::collide`,
+/// with `memory`'s masks: `ContactMemory::internal_edges` A's, `masks_b` B's), or through
+/// `b2CollidePolygons` for `Backend::Box2D` and `Config::triangles_only`. `memory` is the pair's
+/// state from its previous evaluation (updated); nullptr: nothing remembered, a cold evaluation.
+/// Counted in `stats`.
 void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape& shape_a,
                       const b2Transform& xf_a, const b2PolygonShape& shape_b,
                       const b2Transform& xf_b, ContactMemory* memory = nullptr,
                       const Config& config = Config::all());
+
+/// The plug-in's answer for one polygon–circle pair (the polygon as fixture A, as Box2D orders
+/// them), exactly what its contact's `Evaluate` computes with `config`: the exact solver
+/// (`dyop::collide`) with `memory`'s masks (`ContactMemory::internal_edges` holds the polygon's),
+/// or Box2D's `b2CollidePolygonAndCircle` for `Backend::Box2D` and `Config::triangles_only`.
+/// Counted in `stats`.
+void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
+                                const b2PolygonShape& polygon, const b2Transform& xf_a,
+                                const b2CircleShape& circle, const b2Transform& xf_b,
+                                ContactMemory* memory = nullptr,
+                                const Config& config = Config::all());
 
 /// Counters since the last `install` or `reset_stats`, summed over every thread that evaluated
 /// pairs (with one world, or worlds stepped one after another, the counts of those worlds).
 struct Stats {
   /// Triangle pairs evaluated, per backend (index: `static_cast<int>(Backend)`).
   std::array<std::uint64_t, backend_count> triangle_pairs{};
-  /// Other polygon pairs (a side with more than 3 vertices), passed to `b2CollidePolygons`.
+  /// Other polygon pairs (a side with more than 3 vertices), evaluated by any path.
   std::uint64_t polygon_pairs = 0;
-  /// Triangle-pair evaluations that produced a non-empty manifold.
+  /// Polygon–circle pairs evaluated by the plug-in's contact (none with `Config::triangles_only`).
+  std::uint64_t circle_pairs = 0;
+  /// Of `polygon_pairs` and `circle_pairs`, those answered exactly by the solver (`dyop::collide`,
+  /// for every backend but `Box2D`); the others by Box2D's own functions (`Backend::Box2D`,
+  /// `Config::triangles_only`, or a polygon `Polygon<float>` refuses, also counted in `fallbacks`).
+  std::uint64_t exact_pairs = 0;
+  /// Evaluations of the plug-in's pairs (triangle pairs, other polygon pairs, polygon–circle
+  /// pairs) that produced a non-empty manifold.
   std::uint64_t manifolds = 0;
   /// Triangle pairs the backend could not answer (`Status::Invalid`, or a triangle rejected by
   /// `Triangle<float>::make`), answered by `b2CollidePolygons` instead so that the simulation goes

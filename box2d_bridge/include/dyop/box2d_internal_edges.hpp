@@ -9,6 +9,7 @@
 
 #include <optional>
 
+#include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
 
 namespace dyop::box2d {
@@ -29,13 +30,20 @@ namespace dyop::box2d {
 ///   another triangle's edge takes that edge as the outline through it, straight.
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 
-/// Fixes the edge data of every triangle fixture of `body`: its masks as `triangle_internal_edges`
-/// gives them now, kept in the fixture (no memory beyond it). Contacts then read them in O(1) and
-/// never look anything up; the fixed triangles of other bodies next to `body`'s get theirs again.
-/// Fixed edge data changes only through `fix_internal_edges`, `refresh_internal_edges` and
-/// `add_triangles` (`dyop/box2d_mesh.hpp`): after changing a fixed ground by hand (a fixture
-/// created or destroyed, a body moved, enabled, disabled or made static or not), refresh where it
-/// changed. Call between steps. A disabled body's triangles get empty masks until refreshed.
+/// The masks of any polygon fixture (a triangle, a `SetAsBox` box, up to 8 vertices) as they are
+/// now, bits 0..count−1 in Box2D's vertex order, by the same rules: its edge group holds the
+/// polygons of every vertex count of its body (and, static, of every static body). Empty for a
+/// circle, an edge or a chain. For a triangle, `triangle_internal_edges`'s bits.
+ShapeMasks polygon_internal_edges(const b2Fixture& fixture);
+
+/// Fixes the edge data of every polygon fixture of `body` (triangles and polygons up to 7
+/// vertices): its masks as `triangle_internal_edges` gives them now, kept in the fixture (no memory
+/// beyond it). Contacts then read them in O(1) and never look anything up; the fixed triangles of
+/// other bodies next to `body`'s get theirs again. Fixed edge data changes only through
+/// `fix_internal_edges`, `refresh_internal_edges` and `add_triangles` (`dyop/box2d_mesh.hpp`):
+/// after changing a fixed ground by hand (a fixture created or destroyed, a body moved, enabled,
+/// disabled or made static or not), refresh where it changed. Call between steps. A disabled body's
+/// triangles get empty masks until refreshed.
 void fix_internal_edges(b2Body& body);
 
 /// `fix_internal_edges` of every body of `world`.
@@ -50,6 +58,11 @@ int refresh_internal_edges(b2World& world, const b2AABB& region);
 /// The fixed edge data of `fixture` (bits 0..2, Box2D's vertex order), or nothing: not a triangle,
 /// or never fixed (its contacts then find its masks themselves, as `Config::internal_edges` says).
 std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture);
+
+/// The fixed edge data of polygon fixture `fixture` of any vertex count (bits 0..count−1), or
+/// nothing: not a polygon, never fixed, or an 8-gon (no slot of its shape is free to hold it: its
+/// contacts find its masks, as for a fixture never fixed).
+std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture);
 
 /// Makes every contact of `world` find its masks again when next needed: O(contacts), for a
 /// program that moved static bodies (`SetTransform`) and wants bodies that were farther than the

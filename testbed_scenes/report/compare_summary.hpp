@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// What `dyop compare` opens with, on standard output and at the top of `report.md`: the plug-in
+/// against Box2D's own contact on this machine in at most `summary_max_lines` lines, every
+/// figure taken from the records the run's main table and sections produced.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/compare_section.hpp"
+
+namespace dyop::report {
+
+/// The most lines the summary takes: what a newcomer reads in a minute.
+inline constexpr int summary_max_lines = 20;
+
+/// One sliding scene's bodies under Box2D's own contact and under the plug-in (`dyop`).
+struct GlideFigures {
+  std::string scene;  ///< "slide" (triangulated grounds) or "tiles" (tiled grounds)
+  /// Largest |v_y| (m/s) and smallest travel (1: a glide) of the sliding bodies, each side.
+  double own_vertical_speed = 0, own_travel = 0, plugin_vertical_speed = 0, plugin_travel = 0;
+};
+
+/// One scene's wall time with the plug-in (`dyop`) over Box2D's own contact (below 1: faster).
+struct WallTimeFigures {
+  std::string scene;
+  double narrowphase_ratio = 0;  ///< `b2Profile::collide`
+  double step_ratio = 0;         ///< `b2World::Step`
+};
+
+/// The largest depth error of one runner over the main table's scenes, and where.
+struct DepthErrorFigures {
+  double max_m = 0;   ///< largest `pd_error_max` (m)
+  std::string scene;  ///< the scene of that error
+};
+
+/// Everything the summary says, in figures; a part the run did not measure is absent.
+struct SummaryFigures {
+  std::string machine;                          ///< the CPU and its hardware threads
+  int scenes = 0;                               ///< scenes of the main table
+  std::optional<DepthErrorFigures> depth_own;   ///< Box2D's `b2CollidePolygons` (`box2d`)
+  std::optional<DepthErrorFigures> depth_dyop;  ///< the plug-in (`dyop`)
+  std::vector<GlideFigures> glides;             ///< from the slide section
+  std::vector<WallTimeFigures> wall_times;      ///< from the in-world section
+  bool viewer_pages = false;                    ///< the viewer section wrote its pages
+};
+
+/// The figures of `comparison`: the main table's, then each measured section's
+/// (`CompareSection::summarize`).
+SummaryFigures summary_figures(const Comparison& comparison);
+
+/// The summary's lines (Markdown that reads as plain text), at most `summary_max_lines`.
+std::vector<std::string> summary_lines(const Comparison& comparison);
+
+}  // namespace dyop::report
