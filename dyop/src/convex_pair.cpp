@@ -5,6 +5,7 @@
 
 #include "detail/clip_manifold.hpp"
 #include "detail/fill_result.hpp"
+#include "detail/polygon_circle.hpp"
 
 namespace dyop {
 namespace {
@@ -12,9 +13,7 @@ namespace {
 using detail::AxisOverlap;
 using detail::status_of_overlap;
 
-// Up to 8 vertices of one shape, in the pair's local frame.
-template <class T>
-using Local = std::array<Vec2<T>, max_polygon_vertices>;
+using detail::Local;
 
 // The two polygons in a frame centred on A's first CCW vertex (as `detail::PairFrame` does for
 // triangles): accuracy relative to the pair's size, not to its distance from the origin. Axis k:
@@ -125,27 +124,6 @@ struct Closest {
   Feature feature_b;
 };
 
-// The point of segment p→q nearest x, and which feature of the segment holds it.
-template <class T>
-Vec2<T> nearest_on_segment(const Vec2<T>& p, const Vec2<T>& q, const Vec2<T>& x,
-                           Feature::Type& type, int& end) {
-  const Vec2<T> d = q - p;
-  const T t = d.dot(x - p);
-  const T dd = d.squaredNorm();
-  type = Feature::Type::Vertex;
-  if (t <= 0) {
-    end = 0;
-    return p;
-  }
-  if (t >= dd) {
-    end = 1;
-    return q;
-  }
-  type = Feature::Type::Edge;
-  end = 0;
-  return p + (t / dd) * d;
-}
-
 template <class T>
 Closest<T> closest_features(const Frame<T>& f) {
   Closest<T> best;
@@ -158,7 +136,7 @@ Closest<T> closest_features(const Frame<T>& f) {
         Feature::Type type;
         int end;
         const Vec2<T> on =
-            nearest_on_segment(segments[j], segments[ps.next(j)], points[i], type, end);
+            detail::nearest_on_segment(segments[j], segments[ps.next(j)], points[i], type, end);
         const T sq = (points[i] - on).squaredNorm();
         if (best_sq >= 0 && !(sq < best_sq)) continue;
         best_sq = sq;
@@ -426,136 +404,9 @@ Result<T> collide(const Polygon<T>& pa, const Polygon<T>& pb, const ConvexQuery<
   return r;
 }
 
-namespace {
-
-// Where a circle's centre lies against a polygon (local frame): the polygon's boundary point
-// nearest it, the feature holding that point, and the centre's signed distance (negative inside).
-template <class T>
-struct CenterPlace {
-  int best_face = 0;  // CCW face the centre lies farthest beyond (first on ties)
-  Feature::Type type = Feature::Type::Edge;
-  int index = 0;                      // CCW face or vertex of the nearest point
-  Vec2<T> nearest = Vec2<T>::Zero();  // on the polygon's boundary
-  Vec2<T> normal = Vec2<T>::Zero();   // unit, from the polygon out toward the centre
-  T signed_distance = 0;
-};
-
-// The nearest point lies on the face the centre lies farthest beyond (for a strictly convex
-// polygon and a centre outside it: were it a vertex of another face, one of that vertex's two
-// faces would lie farther, its normal being nearer the direction from the vertex to the centre),
-// so that face alone is searched, as `b2CollidePolygonAndCircle` does.
-template <class T>
-CenterPlace<T> place_center(const Polygon<T>& p, const Local<T>& v, const Vec2<T>& c) {
-  CenterPlace<T> out;
-  T farthest = p.normal(0).dot(c - v[0]);
-  for (int e = 1; e < p.count(); ++e) {
-    const T s = p.normal(e).dot(c - v[e]);
-    out.best_face = detail::select_index(s > farthest, e, out.best_face);
-    farthest = std::max(farthest, s);
-  }
-  const int e = out.best_face;
-  out.index = e;
-  out.normal = p.normal(e);
-  out.signed_distance = farthest;
-  out.nearest = c - farthest * out.normal;
-  if (farthest <= 0) return out;  // inside: the nearest face line
-  Feature::Type type;
-  int end;
-  const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
-  if (type == Feature::Type::Edge) return out;  // the face's interior: its normal, its distance
-  const T sq = (c - on).squaredNorm();
-  out.type = type;
-  out.nearest = on;
-  out.index = end ? p.next(e) : e;
-  out.signed_distance = std::sqrt(sq);
-  // A centre on the vertex itself (its face's line rounded it outside) has no direction of its
-  // own: the face's normal, a direction of the vertex's normal cone.
-  out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(e);
-  return out;
-}
-
-// The distance from `c` to the polygon's edge `e` as a segment (local frame).
-template <class T>
-T segment_distance(const Polygon<T>& p, const Local<T>& v, int e, const Vec2<T>& c) {
-  Feature::Type type;
-  int end;
-  return (c - nearest_on_segment(v[e], v[p.next(e)], c, type, end)).norm();
-}
-
-}  // namespace
-
 template <class T>
 Result<T> collide(const Polygon<T>& pa, const Circle<T>& circle, const ConvexQuery<T>& q) {
-  const Vec2<T> origin = pa.vertex(0);
-  Local<T> v;
-  for (int i = 0; i < pa.count(); ++i) v[i] = pa.vertex(i) - origin;
-  const Vec2<T> c = circle.center - origin;
-  const T radius = circle.radius;
-  const T band = touching_tolerance<T>() * std::max(pa.size(), radius);
-
-  const CenterPlace<T> plain = place_center(pa, v, c);
-  const T plain_separation = plain.signed_distance - radius;
-  // The rule: a push along an internal edge's normal or from a closed vertex is replaced by the
-  // least push along an allowed face the circle reaches; none: no contact from this pair.
-  CenterPlace<T> at = plain;
-  bool no_usable_axis = false;
-  const ShapeMasks& m = q.masks_a;
-  const bool refused = plain.type == Feature::Type::Edge
-                           ? ((m.edges >> pa.input_edge(plain.index)) & 1) != 0
-                           : ((m.closed_vertices >> pa.input_vertex(plain.index)) & 1) != 0;
-  if (refused && plain_separation <= q.margin) {
-    int best = -1;
-    for (int e = 0; e < pa.count(); ++e) {
-      if (((m.edges >> pa.input_edge(e)) & 1) != 0) continue;
-      if (segment_distance(pa, v, e, c) > radius + q.margin + band) continue;
-      const T s = pa.normal(e).dot(c - v[e]);
-      if (best < 0 || s > at.signed_distance) {
-        best = e;
-        at.signed_distance = s;
-      }
-    }
-    no_usable_axis = best < 0;
-    if (best >= 0) {
-      at.type = Feature::Type::Edge;
-      at.index = best;
-      at.best_face = best;
-      at.normal = pa.normal(best);
-      at.nearest = c - at.signed_distance * at.normal;
-    } else {
-      at = plain;
-    }
-  }
-
-  Result<T> r;
-  r.status = status_of_overlap(-plain_separation, band);
-  // The status and a pair apart are the plain answer's; a touching or penetrating one is pushed
-  // along the rule's face.
-  const CenterPlace<T>& answer = r.status == Status::Separated ? plain : at;
-  if (q.level == Level::Overlap) return r;
-  r.separation = answer.signed_distance - radius;
-  r.depth = std::max(T(0), -r.separation);
-  r.normal = answer.normal;
-  if (q.level == Level::Contact || (q.level == Level::Manifold && q.witnesses)) {
-    r.witness_a = answer.nearest + origin;
-    r.witness_b = c - radius * answer.normal + origin;
-    const int index = answer.type == Feature::Type::Edge ? pa.input_edge(answer.index)
-                                                         : pa.input_vertex(answer.index);
-    r.feature_a = {answer.type, static_cast<std::uint8_t>(index)};
-    r.feature_b = {Feature::Type::Vertex, 0};
-  }
-  if (q.level != Level::Manifold) return r;
-  Manifold<T>& mf = r.manifold;
-  mf.reference_is_a = true;
-  mf.reference_edge = static_cast<std::uint8_t>(pa.input_edge(at.best_face));
-  mf.normal = at.normal;
-  const T separation = at.signed_distance - radius;
-  if (no_usable_axis || separation > q.margin) return r;
-  ManifoldPoint<T>& point = mf.points[0];
-  point.point = c - radius * at.normal + origin;
-  point.separation = separation;
-  point.key = 0;
-  mf.point_count = 1;
-  return r;
+  return detail::collide_polygon_circle(pa, circle, q);
 }
 
 template Result<float> collide(const Polygon<float>&, const Polygon<float>&,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detail/validated_size.hpp"
+
 namespace dyop {
 
 const char* describe(ConvexError e) {
@@ -113,11 +115,8 @@ Polygon<T> Polygon<T>::from_validated(const Vec2<T>* ccw, const Vec2<T>* normals
     p.v_[i] = ccw[i];
     p.n_[i] = normals[i];
   }
-  // Measured along the tangents (the normals turned left), with no square root.
-  for (int i = 0; i < count; ++i) {
-    const T length = Vec2<T>(-normals[i].y(), normals[i].x()).dot(ccw[p.next(i)] - ccw[i]);
-    p.size_ = std::max(p.size_, length);
-  }
+  p.size_ = detail::validated_size<T>(
+      count, [&](int i) { return ccw[i]; }, [&](int i) { return normals[i]; });
   return p;
 }
 

@@ -47,8 +47,8 @@ const std::vector<Entry>& entries() {
       {{"slivers-far", "the slivers scene moved 10 km from the origin", 600, 300},
        detail::build_slivers_far},
       {{"mixed",
-        "triangles, boxes and circles on an edge ground: the edges keep Box2D's own contacts",
-        600, 300},
+        "triangles, boxes and circles on an edge ground: the edges keep Box2D's own contacts", 600,
+        300},
        detail::build_mixed},
       {{"crowd",
         "600 SetAsBox boxes, hexagons, circles and triangles poured into a bin of triangle "

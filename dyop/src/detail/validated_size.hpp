@@ -1,0 +1,25 @@
+#pragma once
+// Internal: the size of a polygon given with its unit outward normals (`Polygon::size`, the
+// longest edge), as every reader of validated data measures it: `Polygon::from_validated`, and the
+// Box2D plug-in reading a `b2PolygonShape` in place. Measured along the tangents (the normals
+// turned left), with no square root.
+
+#include <algorithm>
+
+#include "dyop/vec2.hpp"
+
+namespace dyop::detail {
+
+// `vertex(i)` and `normal(i)`: CCW vertex i and the unit outward normal of edge i (i to i + 1).
+template <class T, class Vertex, class Normal>
+inline T validated_size(int count, const Vertex& vertex, const Normal& normal) {
+  T size = 0;
+  for (int i = 0; i < count; ++i) {
+    const Vec2<T> n = normal(i);
+    const T length = Vec2<T>(-n.y(), n.x()).dot(vertex(i + 1 < count ? i + 1 : 0) - vertex(i));
+    size = std::max(size, length);
+  }
+  return size;
+}
+
+}  // namespace dyop::detail
