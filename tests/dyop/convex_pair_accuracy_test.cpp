@@ -418,6 +418,44 @@ TEST(ConvexInternalEdges, MaskedCircleIsPushedOutAlongTheAllowedFaceByItsExactOv
   expect_masked_circle_pushed_along_the_allowed_face<float>();
 }
 
+// A box sliding over the seam of a tile map: A a tile [0, 1] × [−1, 0] as `SetAsBox` orders it,
+// its right edge (1) shared with the next tile (internal) and its right vertices (1, 2) closed
+// (the outline is flat there); B a box 0.02 into the top and 0.01 past the seam. The plain answer
+// pushes B back along the seam's normal by 0.01; the rule pushes it up, by the exact overlap
+// along the least usable axis: A's top or B's bottom (B's left edge's axis has a closed vertex of
+// A deepest, A's other edges B does not reach, B's other edges A does not reach).
+template <class T>
+void expect_box_over_a_seam_pushed_up() {
+  auto box = [](double x0, double y0, double x1, double y1) {
+    RawPolygon b;
+    b.count = 4;
+    b.v[0] = {x0, y0};
+    b.v[1] = {x1, y0};
+    b.v[2] = {x1, y1};
+    b.v[3] = {x0, y1};
+    return b;
+  };
+  const RawPolygonPair p =
+      rounded_to(precision_of<T>(), RawPolygonPair{box(0, -1, 1, 0), box(0.99, -0.02, 1.49, 0.48)});
+  const double tolerance = exact_bound(precision_of<T>()) * pair_size(p);
+  const Result<T> plain = solve<T>(p, ConvexQuery<T>{Level::Manifold});
+  EXPECT_NEAR(double(plain.separation), -exact_edge_overlap(p, true, 1), tolerance);
+  ConvexQuery<T> q{Level::Manifold};
+  q.masks_a = {0b0010, 0b0110};
+  const Result<T> r = solve<T>(p, q);
+  const double up = std::min(exact_edge_overlap(p, true, 2), exact_edge_overlap(p, false, 0));
+  EXPECT_EQ(r.status, Status::Penetrating);
+  EXPECT_NEAR(double(r.separation), -up, tolerance);
+  EXPECT_NEAR(double(r.normal.x()), 0.0, tolerance);
+  EXPECT_NEAR(double(r.normal.y()), 1.0, tolerance);
+  EXPECT_EQ(r.manifold.point_count, 2);
+}
+
+TEST(ConvexInternalEdges, BoxOverATileSeamIsPushedUpByTheExactOverlapPastTheTop) {
+  expect_box_over_a_seam_pushed_up<double>();
+  expect_box_over_a_seam_pushed_up<float>();
+}
+
 // The centre on A's vertex 2 (A clockwise), which rounding puts a hair outside the line of one of
 // its two edges, 1 and 2; every edge internal but edge 4, which the circle reaches. The plain push,
 // along edge 2's normal, is along an internal edge's: it must be replaced by the push along edge
