@@ -48,25 +48,34 @@ inline double to_float(double x) {
   return rounded;
 }
 
+// Most numbers one input's grid encoding holds (two polygons of 8 vertices).
+inline constexpr int kMaxFuzzCoordinates = 32;
+
+// `count` (at most `kMaxFuzzCoordinates`) numbers x, y, x, y, ... into `out`, raw or on the grid
+// (the format above), as the precision holds them. Odd positions take the grid's y offset.
+inline void read_coordinates(ByteReader& in, bool is_float, bool grid, int count, double* out) {
+  if (!grid) {
+    for (int i = 0; i < count; ++i) out[i] = is_float ? double(in.get<float>()) : in.get<double>();
+    return;
+  }
+  std::array<std::int16_t, kMaxFuzzCoordinates> g{};
+  for (int i = 0; i < count; ++i) g[static_cast<std::size_t>(i)] = in.get<std::int16_t>();
+  const int e = in.get<std::int8_t>();
+  const int f = in.get<std::int8_t>();
+  const double ox = std::ldexp(double(in.get<std::int8_t>()), f);
+  const double oy = std::ldexp(double(in.get<std::int8_t>()), f);
+  for (int i = 0; i < count; ++i) {
+    const double c = std::ldexp(double(g[static_cast<std::size_t>(i)]), e) + (i % 2 == 0 ? ox : oy);
+    out[i] = is_float ? to_float(c) : c;
+  }
+}
+
 inline FuzzInput decode(const std::uint8_t* data, std::size_t size) {
   ByteReader in(data, size);
   FuzzInput out;
   const auto mode = in.get<std::uint8_t>();
   out.is_float = (mode & 1u) != 0;
-  if ((mode & 2u) == 0) {
-    for (double& c : out.coords) c = out.is_float ? double(in.get<float>()) : in.get<double>();
-  } else {
-    std::array<std::int16_t, 12> g;
-    for (std::int16_t& v : g) v = in.get<std::int16_t>();
-    const int e = in.get<std::int8_t>();
-    const int f = in.get<std::int8_t>();
-    const double ox = std::ldexp(double(in.get<std::int8_t>()), f);
-    const double oy = std::ldexp(double(in.get<std::int8_t>()), f);
-    for (int i = 0; i < 12; ++i) {
-      const double c = std::ldexp(double(g[i]), e) + (i % 2 == 0 ? ox : oy);
-      out.coords[i] = out.is_float ? to_float(c) : c;
-    }
-  }
+  read_coordinates(in, out.is_float, (mode & 2u) != 0, 12, out.coords.data());
   out.rest = in.here();
   out.rest_size = in.left();
   return out;

@@ -1,11 +1,17 @@
 #pragma once
-// The exact reference: penetration depth and distance of two triangles computed with exact
-// rational arithmetic (GMP) on the given doubles, rounded once at the end.
+// The exact reference: penetration depth and distance of two convex polygons (two triangles,
+// or 3 to 8 vertices each) and of a polygon and a circle, computed with exact rational arithmetic
+// (GMP) on the given doubles, rounded once at the end.
 //
-// Depth = min over the six Minkowski-difference axes of overlap; each overlap is N/sqrt(L) with N
-// and L exact rationals, evaluated as a 256-bit float (rounding far below double's). Distance when
-// apart = the least of the 18 exact vertex–segment distances.
+// Two polygons: depth = min over both polygons' edge normals (the Minkowski difference's axes) of
+// the overlap; each overlap is N/sqrt(L) with N and L exact rationals, evaluated as a 256-bit
+// float (rounding far below double's). Distance when apart = the least of the exact vertex–segment
+// distances, both ways. A polygon and a circle: the centre's signed distance from the polygon less
+// the radius; inside, minus the least distance to an edge line (N/sqrt(L) each), outside, the
+// square root of the exact squared distance to the nearest edge, its sign decided exactly against
+// the squared radius.
 
+#include "workloads/raw_convex_pair.hpp"
 #include "workloads/raw_pair.hpp"
 
 namespace dyop::workloads {
@@ -16,6 +22,8 @@ struct ExactAnswer {
 };
 
 ExactAnswer exact_separation(const RawPair& p);
+ExactAnswer exact_separation(const RawPolygonPair& p);
+ExactAnswer exact_separation(const RawCirclePair& p);
 
 /// The exact overlap of `p` along the outward normal of one edge (of A when `of_a`, else of B;
 /// edge i runs from vertex i to vertex i + 1 in the caller's order): how far the other triangle
@@ -23,5 +31,10 @@ ExactAnswer exact_separation(const RawPair& p);
 /// (metres; negative: apart along it). The depth along a set of allowed directions is the least
 /// of these over the allowed edges.
 double exact_edge_overlap(const RawPair& p, bool of_a, int edge);
+/// The same for two polygons (edge i from vertex i to vertex (i + 1) % count).
+double exact_edge_overlap(const RawPolygonPair& p, bool of_a, int edge);
+/// The exact overlap of circle B past the line of A's edge `edge` (caller's order), along its
+/// outward normal: the radius less the centre's signed distance from that line.
+double exact_edge_overlap(const RawCirclePair& p, int edge);
 
 }  // namespace dyop::workloads

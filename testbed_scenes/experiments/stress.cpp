@@ -218,8 +218,6 @@ void run_precision(const StressOptions& o, std::vector<StressRecord>& records,
 
 }  // namespace
 
-double exact_bound(Precision p) { return p == Precision::Float ? 1e-5 : 1e-12; }
-
 bool promises_exact(const adapters::NarrowPhase& p) {
   return p.method && info(p.method->method).accuracy == Accuracy::Exact;  // Box2D's: absolute
 }

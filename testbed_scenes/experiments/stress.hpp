@@ -13,7 +13,7 @@
 /// - invariance: a pair moved (translated; turned about its centre), reordered (A's vertices
 ///   rotated, B's winding reversed) or swapped (B, A) must change the separation as the exact
 ///   reference's changes (moved inputs are rounded again, which moves the exact answer too),
-///   within `exact_bound` · size; a violation is a pair where it does not.
+///   within `workloads::exact_bound` · size; a violation is a pair where it does not.
 
 #include <cstdint>
 #include <iosfwd>
@@ -32,12 +32,7 @@ struct StressOptions {
   bool run_float = true;      ///< measure the float instantiation (and Box2D)
 };
 
-/// The bound of "exact", relative to the pair's size: double 1e-12; float 1e-5 (on float input).
-/// Why: the figures; both are far above the rounding of an exact method (a few eps) and
-/// far below the error of a wrong axis or feature. Also the tolerance of an invariance check.
-double exact_bound(workloads::Precision p);
-
-/// `p` promises the exact answer (error within `exact_bound`, no misclassification): the
+/// `p` promises the exact answer (error within `workloads::exact_bound`, no misclassification): the
 /// registry's `Accuracy::Exact` rows (sat, dyop and the batch kernel, sat's arithmetic).
 bool promises_exact(const adapters::NarrowPhase& p);
 

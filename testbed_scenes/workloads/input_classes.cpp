@@ -16,12 +16,6 @@ namespace {
 using V = Vec2<double>;
 using Tri = std::array<V, 3>;
 
-V point_in(Random& g, double lo, double hi) {
-  const double x = g.uniform(lo, hi);
-  const double y = g.uniform(lo, hi);
-  return {x, y};
-}
-
 // `length` in a random direction.
 V random_offset(Random& g, double length) { return length * g.unit_vector(); }
 
@@ -43,7 +37,7 @@ Tri random_triangle(Random& g, const V& centre, double size) {
 
 // A general pair's B: size 0.3 to 1.5 about a point within a unit of A's centre.
 Tri general_b(Random& g) {
-  const V centre = point_in(g, -1, 1);
+  const V centre = g.point_in(-1, 1);
   const double size = g.uniform(0.3, 1.5);
   return random_triangle(g, centre, size);
 }
@@ -103,9 +97,9 @@ Tri right_triangle(Random& g, const V& corner) {
 }
 
 RawPair axis_aligned(Random& g) {
-  const V c = point_in(g, -1, 1);
+  const V c = g.point_in(-1, 1);
   // Half the time B's corner shares a coordinate with A's, so edges lie on one line.
-  V d = point_in(g, -1, 1);
+  V d = g.point_in(-1, 1);
   if (g.coin()) d[g.below(2)] = 0;
   const Tri a = right_triangle(g, c);
   return {a, right_triangle(g, c + d)};
@@ -126,8 +120,8 @@ Tri sliver(Random& g, const V& centre) {
 RawPair sliver_pair(Random& g) {
   for (;;) {
     const Tri a = random_triangle(g, V::Zero(), 1.0);
-    RawPair p{a, sliver(g, point_in(g, -1, 1))};
-    if (g.coin()) p.a = sliver(g, point_in(g, -0.3, 0.3));
+    RawPair p{a, sliver(g, g.point_in(-1, 1))};
+    if (g.coin()) p.a = sliver(g, g.point_in(-0.3, 0.3));
     if (valid_in_double(p.a) && valid_in_double(p.b)) return p;
   }
 }
@@ -207,7 +201,7 @@ RawPair contained(Random& g) {
 }
 
 RawPair identical(Random& g) {
-  const V centre = point_in(g, -2, 2);
+  const V centre = g.point_in(-2, 2);
   const Tri t = random_triangle(g, centre, 1.0);
   return {t, g.shuffled(t)};
 }
@@ -231,7 +225,7 @@ RawPair touching(Random& g) {
   }
   if (g.coin()) b[1].y() = y0;  // edge on edge half of the time when B also has a flat bottom
   const int turns = g.below(4);
-  const V shift = point_in(g, -8, 8).array().round().matrix();
+  const V shift = g.point_in(-8, 8).array().round().matrix();
   auto turn = [&](V v) {
     for (int t = 0; t < turns; ++t) v = V(-v.y(), v.x());
     return v + shift;
@@ -305,7 +299,7 @@ RawPair nearly_collinear(Random& g, Precision precision) {
   const double tolerance = precision == Precision::Float ? double(degenerate_tolerance<float>())
                                                          : degenerate_tolerance<double>();
   auto flat = [&](double reach) {
-    const V centre = point_in(g, -reach, reach);
+    const V centre = g.point_in(-reach, reach);
     return flat_triangle(g, centre, tolerance * g.log_uniform(-1, 3));
   };
   RawPair p{flat(1), general_b(g)};

@@ -64,10 +64,23 @@ class Random {
     }
   }
 
+  /// A point uniform in the square [lo, hi)².
+  Vec2<double> point_in(double lo, double hi) {
+    const double x = uniform(lo, hi);
+    const double y = uniform(lo, hi);
+    return {x, y};
+  }
+
+  /// The polygon `v[0..count)` in a random order of the same cycle: rotated, and reversed half the
+  /// time.
+  void shuffle(Vec2<double>* v, int count) {
+    std::rotate(v, v + below(count), v + count);
+    if (coin()) std::reverse(v + 1, v + count);
+  }
+
   /// The same three vertices in a random order: rotated, and reversed half the time.
   std::array<Vec2<double>, 3> shuffled(std::array<Vec2<double>, 3> t) {
-    std::rotate(t.begin(), t.begin() + below(3), t.end());
-    if (coin()) std::swap(t[1], t[2]);
+    shuffle(t.data(), 3);
     return t;
   }
 

@@ -5,15 +5,6 @@ namespace {
 
 using V = Vec2<double>;
 
-// Through a volatile float: GCC 12.2 at -O2 folds a vectorised double → float → double round trip
-// of two coordinates into nothing (wrong code; found by the stress tests, where the rounding went
-// missing).
-double rounded(Precision p, double x) {
-  if (p == Precision::Double) return x;
-  const volatile float f = static_cast<float>(x);
-  return f;
-}
-
 }  // namespace
 
 bool valid_in_double(const std::array<V, 3>& t) {
@@ -38,8 +29,17 @@ double pair_size(const RawPair& p) {
   return (box.hi - box.lo).norm();
 }
 
+// Through a volatile float: GCC 12.2 at -O2 folds a vectorised double → float → double round trip
+// of two coordinates into nothing (wrong code; found by the stress tests, where the rounding went
+// missing).
+double rounded_to(Precision p, double x) {
+  if (p == Precision::Double) return x;
+  const volatile float f = static_cast<float>(x);
+  return f;
+}
+
 V rounded_to(Precision precision, const V& v) {
-  return {rounded(precision, v.x()), rounded(precision, v.y())};
+  return {rounded_to(precision, v.x()), rounded_to(precision, v.y())};
 }
 
 RawPair rounded_to(Precision precision, const RawPair& p) {

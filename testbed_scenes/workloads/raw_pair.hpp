@@ -45,6 +45,9 @@ PairBox pair_box(const RawPair& p);
 /// The pair's size: the diagonal of `pair_box` (unit of relative errors).
 double pair_size(const RawPair& p);
 
+/// `x` rounded to precision `precision` (unchanged for double; for float held exactly in double).
+double rounded_to(Precision precision, double x);
+
 /// `v` rounded to precision `precision` (unchanged for double; for float held exactly in double).
 Vec2<double> rounded_to(Precision precision, const Vec2<double>& v);
 

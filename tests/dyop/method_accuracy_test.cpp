@@ -97,11 +97,13 @@ class MethodAccuracy : public ::testing::TestWithParam<Method> {};
 // Double: the exact methods within 1e-12 of the pair's size (the bound); EPA too, since
 // on triangles its polytope reaches a Minkowski edge exactly.
 TEST_P(MethodAccuracy, DoubleMeetsItsPromiseInEveryClass) {
-  check_method<double>(GetParam(), 1e-12);
+  check_method<double>(GetParam(), exact_bound(Precision::Double));
 }
 
 // Float on float-rounded input: within 1e-5 of the pair's size.
-TEST_P(MethodAccuracy, FloatMeetsItsPromiseInEveryClass) { check_method<float>(GetParam(), 1e-5); }
+TEST_P(MethodAccuracy, FloatMeetsItsPromiseInEveryClass) {
+  check_method<float>(GetParam(), exact_bound(Precision::Float));
+}
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, MethodAccuracy, ::testing::ValuesIn(pair_methods),
                          [](const auto& info) {
