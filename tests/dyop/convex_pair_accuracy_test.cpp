@@ -361,17 +361,6 @@ double segment_distance(const Vec2<double>& c, const Vec2<double>& p, const Vec2
 // reaches k; otherwise no allowed face is usable: the plain separation and no manifold point.
 // Pairs within a hair of a tie or of reaching k are passed by (which side they fall on is
 // rounding).
-// A circle centred exactly on a vertex of the polygon, for the masked check below: `collide` keeps
-// such a centre's push along a face's normal even when that face is internal
-// (ConvexInternalEdges.MaskedCircleOnAVertexIsNotPushedAlongAnInternalFace, skipped until the
-// solver is fixed), so the check passes these pairs by until then.
-bool centre_on_a_vertex(const RawCirclePair& p) {
-  for (int i = 0; i < p.a.count; ++i) {
-    if (p.a.v[static_cast<std::size_t>(i)] == p.b.center) return true;
-  }
-  return false;
-}
-
 template <class T>
 void expect_masked_circle_pushed_along_the_allowed_face() {
   const double bound = exact_bound(precision_of<T>());
@@ -379,7 +368,6 @@ void expect_masked_circle_pushed_along_the_allowed_face() {
   int unusable = 0;
   int k = 0;
   for (const RawCirclePair& p : convex_pairs<T, RawCirclePair>(ConvexClass::Nested)) {
-    if (centre_on_a_vertex(p)) continue;
     k = (k + 1) % p.a.count;
     const double size = pair_size(p);
     const double hair = 1e-6 * size;
@@ -459,10 +447,9 @@ TEST(ConvexInternalEdges, BoxOverATileSeamIsPushedUpByTheExactOverlapPastTheTop)
 // The centre on A's vertex 2 (A clockwise), which rounding puts a hair outside the line of one of
 // its two edges, 1 and 2; every edge internal but edge 4, which the circle reaches. The plain push,
 // along edge 2's normal, is along an internal edge's: it must be replaced by the push along edge
-// 4's, by the circle's exact overlap past it, as for a centre a hair inside. `collide` keeps edge
-// 2's normal, as if the push came from the vertex, which is not closed (found by the nested class).
+// 4's, by the circle's exact overlap past it, as for a centre a hair inside (found by the nested
+// class: `collide` kept edge 2's normal, as if the push came from the vertex, which is not closed).
 TEST(ConvexInternalEdges, MaskedCircleOnAVertexIsNotPushedAlongAnInternalFace) {
-  GTEST_SKIP() << "the solver's bug: a centre on a vertex is pushed along an internal face";
   RawCirclePair p;
   for (const Vec2<double>& v : {Vec2<double>(-0.091678444619576249, 0.99576171284801929),
                                 Vec2<double>(0.4206529926796051, 0.78780345723685474),

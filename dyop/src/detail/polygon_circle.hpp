@@ -75,13 +75,19 @@ template <class T, class P>
   const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
   if (type == Feature::Type::Edge) return out;  // the face's interior: its normal, its distance
   const T sq = (c - on).squaredNorm();
+  // A centre on the vertex itself (its face's line rounded it outside, or its square underflows)
+  // has no direction of its own: it is answered on the face, as a centre a hair inside would be,
+  // so that the internal-edge rule judges that face.
+  if (!(sq > 0)) {
+    out.nearest = on;
+    out.signed_distance = 0;
+    return out;
+  }
   out.type = type;
   out.nearest = on;
   out.index = end ? p.next(e) : e;
   out.signed_distance = std::sqrt(sq);
-  // A centre on the vertex itself (its face's line rounded it outside) has no direction of its
-  // own: the face's normal, a direction of the vertex's normal cone.
-  out.normal = sq > 0 ? Vec2<T>((c - on) / out.signed_distance) : p.normal(e);
+  out.normal = (c - on) / out.signed_distance;
   return out;
 }
 
