@@ -33,9 +33,14 @@ int run(const StressArgs& args) {
   options.run_float = args.precision != "double";
   const std::vector<experiments::StressRecord> records =
       experiments::run_stress(options, std::cerr);
-  // Standard output carries one thing: the table, or what was asked for on "-".
-  if (args.json != "-" && args.markdown != "-")
+  const std::vector<experiments::ConvexStressRecord> convex =
+      experiments::run_convex_stress(options, std::cerr);
+  // Standard output carries one thing: the tables, or what was asked for on "-".
+  if (args.json != "-" && args.markdown != "-") {
     report::stress_records(records).write_table(std::cout);
+    std::cout << "\nPairs beyond two triangles (dyop::collide, the exact solver):\n";
+    report::convex_stress_records(convex).write_table(std::cout);
+  }
   std::vector<report::Problem> problems;
   auto write = [&](const std::string& path, auto&& body) {
     if (path.empty()) return;
@@ -48,9 +53,10 @@ int run(const StressArgs& args) {
     report::write_json_document(report::stress_records(records).json(), o);
   });
   write(args.markdown, [&](std::ostream& o) { report::write_markdown(records, o); });
-  const std::vector<std::string> broken = experiments::broken_promises(records);
+  std::vector<std::string> broken = experiments::broken_promises(records);
+  for (std::string& b : experiments::broken_convex_promises(convex)) broken.push_back(std::move(b));
   for (const std::string& b : broken) std::cerr << "dyop stress: broken promise: " << b << '\n';
-  std::cerr << "dyop stress: " << records.size() << " records, "
+  std::cerr << "dyop stress: " << records.size() + convex.size() << " records, "
             << (broken.empty() ? "every promise held"
                                : std::to_string(broken.size()) + " broken promises")
             << '\n';

@@ -52,6 +52,25 @@ Records stress_records(const std::vector<StressRecord>& records) {
   return out;
 }
 
+Records convex_stress_records(const std::vector<experiments::ConvexStressRecord>& records) {
+  Records out({{"precision", "precision", "prec", -6},
+               {"class", "class", "", -11},
+               {"family", "pairs of", "", -15},
+               {"pairs", "pairs", "", 6},
+               {"err_max", "err max", "", 9},
+               {"err_p99", "err p99", "", 9},
+               {"nonfinite", "NaN/inf", "nonfin", 6},
+               {"misclassified", "misclassified", "miscl", 5},
+               {"winding", "winding violations", "wind", 5}});
+  for (const experiments::ConvexStressRecord& r : records) {
+    out.add({Value::text(workloads::name(r.precision)), Value::text(workloads::name(r.cls)),
+             Value::text(experiments::name(r.family)), Value::count(r.pairs),
+             Value::number(r.err_max, "%.2e"), Value::number(r.err_p99, "%.2e"),
+             Value::count(r.nonfinite), Value::count(r.misclassified), Value::count(r.winding)});
+  }
+  return out;
+}
+
 void write_markdown(const std::vector<StressRecord>& records, std::ostream& out) {
   std::vector<std::string> classes;
   for (InputClass c : workloads::stress_classes) classes.push_back(workloads::name(c));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "experiments/stress.hpp"
+#include "experiments/stress_convex.hpp"
 #include "report/records.hpp"
 
 namespace dyop::report {
@@ -16,6 +17,10 @@ namespace dyop::report {
 /// invariance check, `invariance_translation`, ...; the worst pair, a `dyop pairs` CSV line, in
 /// the JSON only).
 Records stress_records(const std::vector<experiments::StressRecord>& records);
+
+/// The convex part's records (`experiments/stress_convex.hpp`), one row per precision, class and
+/// family: the aligned table printed after the triangles' and its JSON.
+Records convex_stress_records(const std::vector<experiments::ConvexStressRecord>& records);
 
 /// The stress tables of docs/measurements.md (Markdown): max error per runner and category, and the
 /// counts per runner and precision.

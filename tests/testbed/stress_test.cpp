@@ -11,6 +11,7 @@
 #include "exact_reference/exact_reference.hpp"
 #include "workloads/input_classes.hpp"
 #include "experiments/stress.hpp"
+#include "experiments/stress_convex.hpp"
 
 namespace dyop::experiments {
 namespace {
@@ -117,6 +118,21 @@ TEST_P(StressPromises, OnlyDegenerateCategoriesHaveRejectedPairs) {
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, StressPromises,
                          ::testing::Values(Precision::Double, Precision::Float),
                          [](const auto& info) { return std::string(workloads::name(info.param)); });
+
+// The convex part: `dyop::collide` exact, classified, finite and independent of winding on every
+// convex class, in both precisions, as `dyop stress --check` promises; its rows are every family
+// on every class.
+TEST(ConvexStress, EveryPromiseHoldsOnEveryClassAndFamily) {
+  StressOptions o;
+  o.pairs = kPairs / 2;
+  std::ostringstream progress;
+  const std::vector<ConvexStressRecord> records = run_convex_stress(o, progress);
+  EXPECT_EQ(records.size(), 2u * 2u * std::size(workloads::convex_classes));
+  std::ostringstream all;
+  for (const std::string& b : broken_convex_promises(records)) all << b << '\n';
+  EXPECT_EQ(all.str(), "");
+  for (const ConvexStressRecord& r : records) EXPECT_EQ(r.pairs, o.pairs) << name(r.family);
+}
 
 // The categories are what they say, in the precision they are made for.
 
