@@ -1,14 +1,18 @@
 #pragma once
 /// \file
 /// The Box2D 2.4 plug-in: routes the contacts of triangle pairs through DyOP-PD (or any other
-/// method of the library) inside an unchanged Box2D program.
+/// method of the library), and those of every other polygon pair and polygon–circle pair through
+/// the exact solver, inside an unchanged Box2D program.
 ///
 ///     #include <dyop/box2d.hpp>
 ///     dyop::box2d::install(dyop::box2d::Backend::Dyop);  // at any moment
 ///
-/// Only polygon–polygon pairs are dispatched through Box2D's contact registry. Of those, a pair of
-/// two triangles (3-vertex `b2PolygonShape`s) goes to the installed backend; every other polygon
-/// pair goes to `b2CollidePolygons` unchanged; circles, edges and chains keep Box2D's own contacts.
+/// The plug-in registers its contact for polygon–polygon and polygon–circle pairs in Box2D's
+/// contact registry. A pair of two triangles (3-vertex `b2PolygonShape`s) goes to the installed
+/// backend; every other polygon pair (4 to 8 vertices on a side) and every polygon–circle pair to
+/// `dyop::collide` (`dyop/convex_pair.hpp`), with the internal-edge rule, under every backend but
+/// `Box2D` (Box2D's own functions); `Config::triangles_only` keeps to triangle pairs. Circle–circle
+/// pairs, edges and chains keep Box2D's own contacts.
 ///
 /// Conventions (Box2D's manifold contract, kept exactly):
 /// - The manifold is `e_faceA` or `e_faceB`: `localNormal` is the reference polygon's own
@@ -48,7 +52,8 @@
 
 namespace dyop::box2d {
 
-/// The narrow phase a triangle pair goes to: one of the library's methods fit for simulation
+/// The narrow phase a triangle pair goes to (other pairs: the exact solver, or Box2D's own
+/// functions for `Box2D`): one of the library's methods fit for simulation
 /// (the registry's `MethodInfo::simulation()` rows: every method but `DyopPaper`, kept for
 /// reproducing the paper, and `Batch`, many pairs per call), in the registry's order, then
 /// `Box2D`: Box2D's own `b2CollidePolygons` through the same path, for comparison.
