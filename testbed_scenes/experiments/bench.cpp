@@ -7,6 +7,7 @@
 
 #include "dyop/sat.hpp"
 #include "exact_reference/exact_reference.hpp"
+#include "experiments/error_figures.hpp"
 #include "experiments/pair_timing.hpp"
 
 namespace dyop::experiments {
@@ -70,8 +71,8 @@ void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, Ben
   }
   rec.normal_err_mean = angles ? angle_sum / angles : 0;
   if (errors.empty()) return;
-  std::sort(errors.begin(), errors.end());
-  rec.err_max = errors.back();
+  const ErrorFigures figures = error_figures(errors);
+  rec.err_max = figures.max;
   double sum = 0;
   int exact = 0;
   for (double e : errors) {
@@ -79,7 +80,7 @@ void measure_errors(const std::vector<Answer<T>>& got, const Reference& ref, Ben
     exact += e <= kExactRelTol;
   }
   rec.err_mean = sum / static_cast<double>(errors.size());
-  rec.err_p99 = errors[std::min(errors.size() - 1, static_cast<std::size_t>(0.99 * errors.size()))];
+  rec.err_p99 = figures.p99;
   rec.exact_fraction = static_cast<double>(exact) / static_cast<double>(errors.size());
 }
 

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "exact_reference/exact_reference.hpp"
+#include "experiments/error_figures.hpp"
 #include "report/format.hpp"
 #include "workloads/random.hpp"
 
@@ -183,12 +184,9 @@ StressRecord measure(const adapters::NarrowPhase& r, InputClass c, const Categor
       rec.invariance[v - 1] += std::abs(change - exact_change) > bound * size;
     }
   }
-  if (!errors.empty()) {
-    std::sort(errors.begin(), errors.end());
-    rec.err_max = errors.back();
-    rec.err_p99 =
-        errors[std::min(errors.size() - 1, static_cast<std::size_t>(0.99 * errors.size()))];
-  }
+  const ErrorFigures figures = error_figures(errors);
+  rec.err_max = figures.max;
+  rec.err_p99 = figures.p99;
   return rec;
 }
 

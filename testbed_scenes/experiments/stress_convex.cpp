@@ -7,6 +7,8 @@
 
 #include "dyop/convex_pair.hpp"
 #include "exact_reference/exact_reference.hpp"
+#include "experiments/error_figures.hpp"
+#include "workloads/finite_fields.hpp"
 
 namespace dyop::experiments {
 namespace {
@@ -37,17 +39,6 @@ Result<T> solve(const RawCirclePair& p, const ConvexQuery<T>& q) {
   return collide(workloads::build<T>(p.a).polygon, workloads::build<T>(p.b), q);
 }
 
-template <class T>
-bool finite(const Result<T>& r) {
-  bool ok = std::isfinite(r.separation) && std::isfinite(r.depth) && r.normal.allFinite() &&
-            r.witness_a.allFinite() && r.witness_b.allFinite() && r.manifold.normal.allFinite();
-  for (int i = 0; i < r.manifold.point_count; ++i) {
-    ok = ok && r.manifold.points[i].point.allFinite() &&
-         std::isfinite(r.manifold.points[i].separation);
-  }
-  return ok;
-}
-
 template <class T, class Pair>
 ConvexStressRecord measure(ConvexFamily family, ConvexClass c, const std::vector<Pair>& pairs) {
   const Precision precision = std::is_same_v<T, float> ? Precision::Float : Precision::Double;
@@ -63,7 +54,9 @@ ConvexStressRecord measure(ConvexFamily family, ConvexClass c, const std::vector
     q.level = Level::Manifold;
     q.margin = T(0.01) * T(workloads::pair_size(p));
     const Result<T> r = solve<T>(p, q);
-    const bool all_finite = finite(r) && finite(solve<T>(p, ConvexQuery<T>{Level::Contact}));
+    const bool all_finite =
+        workloads::finite_at(r, Level::Manifold) &&
+        workloads::finite_at(solve<T>(p, ConvexQuery<T>{Level::Contact}), Level::Contact);
     rec.nonfinite += !all_finite;
     if (!all_finite) continue;
     const double size = workloads::pair_size(p);
@@ -77,12 +70,9 @@ ConvexStressRecord measure(ConvexFamily family, ConvexClass c, const std::vector
     const Result<T> w = solve<T>(rewound(p), q);
     rec.winding += !(std::abs(double(w.separation) - double(r.separation)) <= bound * size);
   }
-  if (!errors.empty()) {
-    std::sort(errors.begin(), errors.end());
-    rec.err_max = errors.back();
-    rec.err_p99 =
-        errors[std::min(errors.size() - 1, static_cast<std::size_t>(0.99 * errors.size()))];
-  }
+  const ErrorFigures figures = error_figures(errors);
+  rec.err_max = figures.max;
+  rec.err_p99 = figures.p99;
   return rec;
 }
 
