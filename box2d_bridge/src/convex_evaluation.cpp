@@ -42,17 +42,15 @@ class InPlace {
 
 // A `b2PolygonShape` placed by `xf` (B's body frame in A's) as the solver reads a polygon
 // (`detail::collide_polygons`): what `Polygon<float>::from_validated` with the transform would
-// hold (its size measured in the body frame). The normals are placed once here; a vertex is placed
-// when read (the solver's frame reads each once).
+// hold (its size measured in the body frame), each vertex and normal placed when read (the
+// solver's frame reads each once).
 class Placed : public InPlace {
  public:
-  Placed(const b2PolygonShape& shape, const b2Transform& xf) : InPlace(shape), xf_(xf) {
-    for (int i = 0; i < shape.m_count; ++i) n_[i] = turn(InPlace::normal(i));
-  }
+  Placed(const b2PolygonShape& shape, const b2Transform& xf) : InPlace(shape), xf_(xf) {}
   Vec2<float> vertex(int i) const {
     return turn(InPlace::vertex(i)) + Vec2<float>(xf_.p.x, xf_.p.y);
   }
-  const Vec2<float>& normal(int i) const { return n_[i]; }
+  Vec2<float> normal(int i) const { return turn(InPlace::normal(i)); }
 
  private:
   Vec2<float> turn(const Vec2<float>& v) const {
@@ -61,7 +59,6 @@ class Placed : public InPlace {
     return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
   }
   const b2Transform& xf_;
-  Vec2<float> n_[b2_maxPolygonVertices];
 };
 
 // The masks a fixture's pairs read: its fixed edge data, else found now.

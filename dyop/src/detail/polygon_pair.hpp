@@ -5,8 +5,8 @@
 // frame as the frame reads it: no `Polygon` built).
 //
 // A polygon-like type has a `Polygon<T>`'s members `count`, `vertex`, `normal`, `next`, `size`,
-// `input_vertex` and `input_edge`; `vertex(i)` is read once per vertex (by the frame), so it may
-// compute the vertex on each call.
+// `input_vertex` and `input_edge`; `vertex(i)` and `normal(i)` are read once each (into the
+// frame), so they may compute the vertex or normal on each call.
 
 #include <algorithm>
 #include <array>
@@ -30,27 +30,41 @@ struct Frame {
   const PA& pa;
   const PB& pb;
   Vec2<T> origin;
-  Local<T> a;
-  Local<T> b;
-  T scale;  // the larger polygon's size: the unit of relative tolerances
+  Local<T> v[2];  // A's vertices (v[0]) and B's, local, read once from the shapes
+  Local<T> n[2];  // their edges' unit outward normals, read once from the shapes
+  int counts[2];  // A's vertex count, B's
+  T scale;        // the larger polygon's size: the unit of relative tolerances
 
   [[gnu::always_inline]] Frame(const PA& pa_, const PB& pb_)
-      : pa(pa_), pb(pb_), origin(pa_.vertex(0)), scale(std::max(pa_.size(), pb_.size())) {
-    for (int i = 0; i < pa.count(); ++i) a[i] = pa.vertex(i) - origin;
-    for (int j = 0; j < pb.count(); ++j) b[j] = pb.vertex(j) - origin;
+      : pa(pa_),
+        pb(pb_),
+        origin(pa_.vertex(0)),
+        counts{pa_.count(), pb_.count()},
+        scale(std::max(pa_.size(), pb_.size())) {
+    for (int i = 0; i < counts[0]; ++i) {
+      v[0][i] = pa.vertex(i) - origin;
+      n[0][i] = pa.normal(i);
+    }
+    for (int j = 0; j < counts[1]; ++j) {
+      v[1][j] = pb.vertex(j) - origin;
+      n[1][j] = pb.normal(j);
+    }
   }
-  int axes() const { return pa.count() + pb.count(); }
-  bool of_a(int k) const { return k < pa.count(); }
-  int edge(int k) const { return of_a(k) ? k : k - pa.count(); }
-  Vec2<T> axis(int k) const { return of_a(k) ? pa.normal(k) : Vec2<T>(-pb.normal(edge(k))); }
+  // The index of A's arrays (0) or B's (1).
+  static int side(bool own_a) { return static_cast<int>(!own_a); }
+  int axes() const { return counts[0] + counts[1]; }
+  bool of_a(int k) const { return k < counts[0]; }
+  int edge(int k) const { return of_a(k) ? k : k - counts[0]; }
+  Vec2<T> axis(int k) const { return of_a(k) ? n[0][k] : Vec2<T>(-n[1][k - counts[0]]); }
   // Edge e's unit outward normal of A (`own_a`) or B.
-  Vec2<T> normal(bool own_a, int e) const { return own_a ? pa.normal(e) : pb.normal(e); }
+  const Vec2<T>& normal(bool own_a, int e) const { return n[side(own_a)][e]; }
+  const Local<T>& vertices(bool own_a) const { return v[side(own_a)]; }
+  int count(bool own_a) const { return counts[side(own_a)]; }
+  int next(bool own_a, int i) const { return i + 1 < count(own_a) ? i + 1 : 0; }
   int input_vertex(bool own_a, int i) const {
     return own_a ? pa.input_vertex(i) : pb.input_vertex(i);
   }
   int input_edge(bool own_a, int e) const { return own_a ? pa.input_edge(e) : pb.input_edge(e); }
-  int count(bool own_a) const { return own_a ? pa.count() : pb.count(); }
-  int next(bool own_a, int i) const { return own_a ? pa.next(i) : pb.next(i); }
 };
 
 // The least of `n·v[i]` over `count` vertices, and the first vertex that realises it. Selected,
@@ -86,7 +100,7 @@ AxisOverlap<typename F::Scalar> overlap_on_axis(const F& f, int k) {
   AxisOverlap<typename F::Scalar> o;
   o.axis = k;
   o.overlap =
-      n.dot((own_a ? f.a : f.b)[e]) - least_along(n, own_a ? f.b : f.a, f.count(!own_a), o.deep);
+      n.dot(f.vertices(own_a)[e]) - least_along(n, f.vertices(!own_a), f.count(!own_a), o.deep);
   return o;
 }
 
@@ -95,34 +109,43 @@ AxisOverlap<typename F::Scalar> overlap_on_axis(const F& f, int k) {
 // pairs need them for one axis at most (`overlap_on_axis`).
 template <class T>
 struct Overlaps {
-  std::array<AxisOverlap<T>, 2 * max_polygon_vertices> axis;
-  int best_a = 0;  // least of A's axes (first on ties)
-  int best_b = 0;  // least of B's axes (first on ties)
-  int least = 0;   // least of all (A's on ties): decides the status
+  T overlap[2 * max_polygon_vertices] = {};  // by axis
+  int best_a = 0;                            // least of A's axes (first on ties)
+  int best_b = 0;                            // least of B's axes (first on ties)
+  int least = 0;                             // least of all (A's on ties): decides the status
 
   template <class F>
   explicit Overlaps(const F& f) {
-    for (int k = 0; k < f.axes(); ++k) {
-      const bool own_a = f.of_a(k);
-      const int e = f.edge(k);
-      const Vec2<T> n = f.normal(own_a, e);
-      const Local<T>& own = own_a ? f.a : f.b;
-      const Local<T>& other = own_a ? f.b : f.a;
-      AxisOverlap<T>& o = axis[static_cast<std::size_t>(k)];
-      o.axis = k;
-      o.overlap = n.dot(own[e]) - least_value(n, other, f.count(!own_a));
+    const int na = f.counts[0];
+    for (int e = 0; e < na; ++e) {
+      overlap[e] = f.n[0][e].dot(f.v[0][e]) - least_value(f.n[0][e], f.v[1], f.counts[1]);
     }
-    best_a = least_in(0, f.pa.count(), ~0u);
-    best_b = least_in(f.pa.count(), f.axes(), ~0u);
-    least = axis[best_b].overlap < axis[best_a].overlap ? best_b : best_a;
+    for (int e = 0; e < f.counts[1]; ++e) {
+      overlap[na + e] = f.n[1][e].dot(f.v[1][e]) - least_value(f.n[1][e], f.v[0], na);
+    }
+    best_a = least_of(0, na);
+    best_b = least_of(na, f.axes());
+    least = overlap[best_b] < overlap[best_a] ? best_b : best_a;
+  }
+  // Axis k's overlap, without its deepest vertex (`deep` 0).
+  AxisOverlap<T> at(int k) const { return {k, overlap[k], 0}; }
+  // The least of axes [from, to), to > from (first on ties).
+  int least_of(int from, int to) const {
+    int best = from;
+    T least = overlap[from];
+    for (int k = from + 1; k < to; ++k) {
+      best = detail::select_index(overlap[k] < least, k, best);
+      least = std::min(least, overlap[k]);
+    }
+    return best;
   }
   // The least of axes [from, to) whose bit is set in `mask` (first on ties); −1: none.
   int least_in(int from, int to, unsigned mask) const {
     int best = -1;
     T least = 0;
     for (int k = from; k < to; ++k) {
-      const bool take = ((mask >> k) & 1u) != 0 && (best < 0 || axis[k].overlap < least);
-      least = take ? axis[k].overlap : least;
+      const bool take = ((mask >> k) & 1u) != 0 && (best < 0 || overlap[k] < least);
+      least = take ? overlap[k] : least;
       best = detail::select_index(take, k, best);
     }
     return best;
@@ -168,8 +191,8 @@ Closest<typename F::Scalar> closest_features(const F& f) {
       }
     }
   };
-  search(f.pa, f.a, f.pb, f.b, true);
-  search(f.pb, f.b, f.pa, f.a, false);
+  search(f.pa, f.v[0], f.pb, f.v[1], true);
+  search(f.pb, f.v[1], f.pa, f.v[0], false);
   best.distance = std::sqrt(best_sq);
   return best;
 }
@@ -190,13 +213,13 @@ void fill_from_axis(const F& f, Level level, const AxisOverlap<T>& ax, Result<T>
     return Feature{Feature::Type::Edge, static_cast<std::uint8_t>(f.input_edge(of_a, e))};
   };
   if (f.of_a(ax.axis)) {  // A's face, B's deepest vertex
-    const Vec2<T>& deep = f.b[ax.deep];
+    const Vec2<T>& deep = f.v[1][ax.deep];
     r.witness_b = deep + f.origin;
     r.witness_a = deep + ax.overlap * r.normal + f.origin;
     r.feature_a = edge(true, ax.axis);
     r.feature_b = vertex(false, ax.deep);
   } else {  // B's face, A's deepest vertex
-    const Vec2<T>& deep = f.a[ax.deep];
+    const Vec2<T>& deep = f.v[0][ax.deep];
     r.witness_a = deep + f.origin;
     r.witness_b = deep - ax.overlap * r.normal + f.origin;
     r.feature_a = vertex(true, ax.deep);
@@ -241,8 +264,8 @@ template <class F, class T = typename F::Scalar>
 void clip_manifold(const F& f, int k, T margin, Manifold<T>& m) {
   const bool ref_is_a = f.of_a(k);
   const int e = f.edge(k);
-  const Local<T>& rv = ref_is_a ? f.a : f.b;
-  const Local<T>& iv = ref_is_a ? f.b : f.a;
+  const Local<T>& rv = f.vertices(ref_is_a);
+  const Local<T>& iv = f.vertices(!ref_is_a);
   const Vec2<T> n = f.normal(ref_is_a, e);
   set_reference_face(f, k, m);
 
@@ -287,8 +310,8 @@ struct EdgeBits {
 
 template <class F, class T = typename F::Scalar>
 EdgeBits edge_bits(const F& f, bool own_a, T reach) {
-  const Local<T>& own_v = own_a ? f.a : f.b;
-  const Local<T>& other_v = own_a ? f.b : f.a;
+  const Local<T>& own_v = f.vertices(own_a);
+  const Local<T>& other_v = f.vertices(!own_a);
   EdgeBits out;
   unsigned beyond[max_polygon_vertices] = {};  // bit e: the other's vertex w beyond edge e's line
   for (int e = 0; e < f.count(own_a); ++e) {
@@ -319,7 +342,7 @@ struct UsableAxes {
 
 template <class F, class T = typename F::Scalar>
 UsableAxes usable_axes(const F& f, const ConvexQuery<T>& q, const Overlaps<T>& o, T reach) {
-  const int na = f.pa.count();
+  const int na = f.counts[0];
   unsigned allowed = 0;
   for (int k = 0; k < f.axes(); ++k) {
     allowed |= static_cast<unsigned>(axis_allowed(f, q, k)) << k;
@@ -327,7 +350,7 @@ UsableAxes usable_axes(const F& f, const ConvexQuery<T>& q, const Overlaps<T>& o
   const EdgeBits a = edge_bits(f, true, reach);
   const EdgeBits b = edge_bits(f, false, reach);
   const unsigned touched_a = ~(a.wholly_inside | b.cut_other) & ((1u << na) - 1);
-  const unsigned touched_b = ~(b.wholly_inside | a.cut_other) & ((1u << f.pb.count()) - 1);
+  const unsigned touched_b = ~(b.wholly_inside | a.cut_other) & ((1u << f.counts[1]) - 1);
   const unsigned usable =
       touched_a != 0 && touched_b != 0 ? allowed & (touched_a | touched_b << na) : allowed;
   return {o.least_in(0, na, usable), o.least_in(na, f.axes(), usable)};
@@ -338,7 +361,7 @@ template <class T>
 int reference_of(const Overlaps<T>& o, int a, int b, T hysteresis) {
   if (a < 0) return b;
   if (b < 0) return a;
-  return detail::pick_reference(o.axis[a], o.axis[b], hysteresis).axis;
+  return detail::pick_reference(o.at(a), o.at(b), hysteresis).axis;
 }
 
 // `collide` for polygons `pa` and `pb`: each a `Polygon<T>` or any polygon-like type (see the
@@ -350,7 +373,7 @@ template <class T, class PA, class PB>
   const Frame<T, PA, PB> f(pa, pb);
   const Overlaps<T> o(f);
   const T band = touching_tolerance<T>() * f.scale;
-  const AxisOverlap<T>& least = o.axis[o.least];
+  const AxisOverlap<T> least = o.at(o.least);
   int reference = reference_of(o, o.best_a, o.best_b, q.face_hysteresis);
   int answer_axis = o.least;
   bool no_usable_axis = false;
@@ -360,10 +383,10 @@ template <class T, class PA, class PB>
     const UsableAxes u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
     if (u.any()) {
-      answer_axis = u.best_a < 0                                          ? u.best_b
-                    : u.best_b < 0                                        ? u.best_a
-                    : o.axis[u.best_b].overlap < o.axis[u.best_a].overlap ? u.best_b
-                                                                          : u.best_a;
+      answer_axis = u.best_a < 0                                ? u.best_b
+                    : u.best_b < 0                              ? u.best_a
+                    : o.overlap[u.best_b] < o.overlap[u.best_a] ? u.best_b
+                                                                : u.best_a;
       reference = reference_of(o, u.best_a, u.best_b, q.face_hysteresis);
     } else {
       reference = o.least;
@@ -381,12 +404,11 @@ template <class T, class PA, class PB>
     fill_apart(f, q, least, in_band ? &near : nullptr, r);
   } else {
     const Level level = q.level == Level::Manifold && !q.witnesses ? Level::Depth : q.level;
-    fill_from_axis(f, level,
-                   level >= Level::Contact ? overlap_on_axis(f, answer_axis) : o.axis[answer_axis],
-                   r);
+    fill_from_axis(
+        f, level, level >= Level::Contact ? overlap_on_axis(f, answer_axis) : o.at(answer_axis), r);
   }
   if (q.level != Level::Manifold) return r;
-  if (no_usable_axis || -o.axis[reference].overlap > q.margin) {
+  if (no_usable_axis || -o.overlap[reference] > q.margin) {
     set_reference_face(f, reference, r.manifold);
   } else {
     clip_manifold(f, reference, q.margin, r.manifold);
