@@ -261,7 +261,7 @@ void set_reference_face(const F& f, int k, Manifold<T>& m) {
 // incident edge most anti-parallel to the reference normal, clipped against the reference face's
 // side lines moved out by the margin, points kept within the margin.
 template <class F, class T = typename F::Scalar>
-void clip_manifold(const F& f, int k, T margin, Manifold<T>& m) {
+[[gnu::always_inline]] inline void clip_manifold(const F& f, int k, T margin, Manifold<T>& m) {
   const bool ref_is_a = f.of_a(k);
   const int e = f.edge(k);
   const Local<T>& rv = f.vertices(ref_is_a);
