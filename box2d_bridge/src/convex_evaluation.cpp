@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "detail/polygon_circle.hpp"
+#include "detail/polygon_pair.hpp"
 #include "detail/validated_size.hpp"
 #include "dyop/convex_pair.hpp"
 #include "edge_data.hpp"
@@ -16,21 +17,9 @@
 namespace dyop::box2d::detail {
 namespace {
 
-// A `b2PolygonShape` as the solver's polygon (Box2D's CCW vertices and its own unit normals), in
-// its body frame or placed by `xf`.
-Polygon<float> placed(const b2PolygonShape& shape, const b2Transform* xf = nullptr) {
-  Vec2<float> v[b2_maxPolygonVertices];
-  Vec2<float> n[b2_maxPolygonVertices];
-  for (int i = 0; i < shape.m_count; ++i) {
-    v[i] = {shape.m_vertices[i].x, shape.m_vertices[i].y};
-    n[i] = {shape.m_normals[i].x, shape.m_normals[i].y};
-  }
-  if (!xf) return Polygon<float>::from_validated(v, n, shape.m_count);
-  return Polygon<float>::from_validated(v, n, shape.m_count, xf->q.c, xf->q.s, {xf->p.x, xf->p.y});
-}
-
 // A `b2PolygonShape` in its body frame as the solver reads a polygon
-// (`detail::collide_polygon_circle`), in place: what `placed(shape)` holds, without building it.
+// (`detail::collide_polygon_circle`, `detail::collide_polygons`), in place: what
+// `Polygon<float>::from_validated` would hold, without building it.
 class InPlace {
  public:
   explicit InPlace(const b2PolygonShape& shape)
@@ -49,6 +38,27 @@ class InPlace {
  private:
   const b2PolygonShape& shape_;
   float size_;
+};
+
+// A `b2PolygonShape` placed by `xf` (B's body frame in A's) as the solver reads a polygon
+// (`detail::collide_polygons`): what `Polygon<float>::from_validated` with the transform would
+// hold (its size measured in the body frame), each vertex and normal placed when read (the
+// solver's frame reads each once).
+class Placed : public InPlace {
+ public:
+  Placed(const b2PolygonShape& shape, const b2Transform& xf) : InPlace(shape), xf_(xf) {}
+  Vec2<float> vertex(int i) const {
+    return turn(InPlace::vertex(i)) + Vec2<float>(xf_.p.x, xf_.p.y);
+  }
+  Vec2<float> normal(int i) const { return turn(InPlace::normal(i)); }
+
+ private:
+  Vec2<float> turn(const Vec2<float>& v) const {
+    const float c = xf_.q.c;
+    const float s = xf_.q.s;
+    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+  }
+  const b2Transform& xf_;
 };
 
 // The masks a fixture's pairs read: its fixed edge data, else found now.
@@ -259,17 +269,20 @@ void evaluate_polygons(b2Manifold* manifold, const Setting& setting, const Polyg
       polygon_face_separation(memory.last_face, p.a, p.b, pose.b_in_a) > face_reach(margin)) {
     return skip(manifold, setting, pose, recycling);
   }
-  const Polygon<float> a = placed(p.a);
-  const Polygon<float> b = placed(p.b, &pose.b_in_a);
+  const InPlace a(p.a);
+  const Placed b(p.b, pose.b_in_a);
   ConvexQuery<float> q;
   q.level = Level::Manifold;
   q.margin = margin;
   q.face_hysteresis = face_hysteresis;
   q.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   q.witnesses = false;   // Box2D's solver reads the manifold alone
-  const Result<float> r =
-      answer_with_masks(setting, pose, memory, contact, masks, recycling, false, q,
-                        [&](const ConvexQuery<float>& query) { return collide(a, b, query); });
+  // The solver inlined into this evaluation, as for circles (`evaluate_polygon_circle`).
+  const Result<float> r = answer_with_masks(
+      setting, pose, memory, contact, masks, recycling, false,
+      q, [&](const ConvexQuery<float>& query) __attribute__((always_inline)) {
+        return dyop::detail::collide_polygons(a, b, query);
+      });
   if (r.manifold.point_count > 0) count.manifolds.add();
   memory.last_face = judged_face(r.manifold, p.a.m_count);
   write_manifold(manifold, r.manifold, p, pose.b_in_a);

@@ -93,6 +93,42 @@ inline ClippedEnd<T> clip_end(T s, T s_other, T lo, T hi, T from) {
   return out;
 }
 
+// The clip once the faces are chosen (every vertex count): incident edge p0→p1 against the
+// reference face v1→v2 of outward unit normal `n`, in a frame whose origin is `origin`; each point
+// keyed by `keys`, appended to `m` when within the margin.
+template <class T>
+inline void clip_incident_edge(const Vec2<T>& v1, const Vec2<T>& v2, const Vec2<T>& n,
+                               const Vec2<T>& p0, const Vec2<T>& p1, T margin,
+                               const PointKeys& keys, const Vec2<T>& origin, Manifold<T>& m) {
+  const Vec2<T> tangent(-n.y(), n.x());  // unit, from v1 to v2 (CCW edge, outward normal n)
+  const T s0 = tangent.dot(p0);
+  const T s1 = tangent.dot(p1);
+  const T lo = tangent.dot(v1) - margin;
+  const T hi = tangent.dot(v2) + margin;
+  // The whole edge beyond one side line: Box2D's clip leaves fewer than two points, no manifold.
+  if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return;
+
+  const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
+  const Vec2<T>* vertex_point[2] = {&p0, &p1};
+  const T front = n.dot(v1);
+  for (int k = 0; k < 2; ++k) {
+    // An end the side lines did not cut is the incident vertex itself, bit for bit.
+    const bool cut = ends[k].side != ClipSide::None;
+    // Looked up by index, not branched on: whether a side line cuts an end does not predict.
+    const Vec2<T> choice[2] = {*vertex_point[k], p0 + ends[k].along * (p1 - p0)};
+    const Vec2<T>& p = choice[static_cast<int>(cut)];
+    const T separation = n.dot(p) - front;
+    // Written into the next slot whether kept or not, and counted only when within the margin:
+    // whether an end lies beyond the margin is not predictable (slots past `point_count` are
+    // not part of the answer).
+    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
+    out.point = p + origin;
+    out.separation = separation;
+    out.key = keys.key(k, ends[k].side);
+    m.point_count += static_cast<int>(separation <= margin);
+  }
+}
+
 // Sets `m`'s face fields for the face of `reference_axis` (its points are left as they are).
 template <class T>
 void set_reference_face(const PairFrame<T>& f, int reference_axis, Manifold<T>& m) {
@@ -123,39 +159,10 @@ void clip_manifold(const PairFrame<T>& f, int reference_axis, T margin, Manifold
   min3(n.dot(it.normal(0)), n.dot(it.normal(1)), n.dot(it.normal(2)), least, inc);
   m.incident_edge = static_cast<std::uint8_t>(it.input_edge(inc));
 
-  const Vec2<T>& v1 = rv[e];
-  const Vec2<T> tangent(-n.y(), n.x());  // unit, from v1 to v2 (CCW edge, outward normal n)
-  const Vec2<T>& p0 = iv[inc];
-  const Vec2<T>& p1 = iv[next3(inc)];
-  const T s0 = tangent.dot(p0);
-  const T s1 = tangent.dot(p1);
-  const T lo = tangent.dot(v1) - margin;
-  const T hi = tangent.dot(rv[next3(e)]) + margin;
-  // The whole edge beyond one side line: Box2D's clip leaves fewer than two points, no manifold.
-  if (std::max(s0, s1) < lo || std::min(s0, s1) > hi) return;
-
-  const ClippedEnd<T> ends[2] = {clip_end(s0, s1, lo, hi, T(0)), clip_end(s1, s0, lo, hi, T(1))};
-  const Vec2<T>* vertex_point[2] = {&p0, &p1};
   const PointKeys keys(m.reference_edge, rt.input_vertex(e), rt.input_vertex(next3(e)),
                        m.incident_edge, it.input_vertex(inc), it.input_vertex(next3(inc)),
                        ref_is_a);
-  const T front = n.dot(v1);
-  for (int k = 0; k < 2; ++k) {
-    // An end the side lines did not cut is the incident vertex itself, bit for bit.
-    const bool cut = ends[k].side != ClipSide::None;
-    // Looked up by index, not branched on: whether a side line cuts an end does not predict.
-    const Vec2<T> choice[2] = {*vertex_point[k], p0 + ends[k].along * (p1 - p0)};
-    const Vec2<T>& p = choice[static_cast<int>(cut)];
-    const T separation = n.dot(p) - front;
-    // Written into the next slot whether kept or not, and counted only when within the margin:
-    // whether an end lies beyond the margin is not predictable (slots past `point_count` are
-    // not part of the answer).
-    ManifoldPoint<T>& out = m.points[static_cast<std::size_t>(m.point_count)];
-    out.point = p + f.origin;
-    out.separation = separation;
-    out.key = keys.key(k, ends[k].side);
-    m.point_count += static_cast<int>(separation <= margin);
-  }
+  clip_incident_edge(rv[e], rv[next3(e)], n, iv[inc], iv[next3(inc)], margin, keys, f.origin, m);
 }
 
 }  // namespace dyop::detail
