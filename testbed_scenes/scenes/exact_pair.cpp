@@ -11,7 +11,64 @@ const b2PolygonShape* triangle(const b2Fixture* f) {
   return p->m_count == 3 ? p : nullptr;
 }
 
+// B's body frame in A's, computed in double from the bodies' float transforms.
+FrameBInA frame_of(const b2Contact& contact) {
+  const b2Transform& xa = contact.GetFixtureA()->GetBody()->GetTransform();
+  const b2Transform& xb = contact.GetFixtureB()->GetBody()->GetTransform();
+  const double ca = xa.q.c, sa = xa.q.s, cb = xb.q.c, sb = xb.q.s;
+  const double dx = double(xb.p.x) - double(xa.p.x), dy = double(xb.p.y) - double(xa.p.y);
+  return {ca * cb + sa * sb, ca * sb - sa * cb,
+          Vec2<double>(ca * dx + sa * dy, -sa * dx + ca * dy)};
+}
+
+// A polygon shape's vertices placed by `place` (a body frame into A's), as a `Polygon<double>`.
+template <class Place>
+std::optional<Polygon<double>> polygon_of(const b2PolygonShape& shape, const Place& place) {
+  Vec2<double> v[b2_maxPolygonVertices];
+  for (int i = 0; i < shape.m_count; ++i) v[i] = place(shape.m_vertices[i]);
+  const PolygonOrError<double> p = Polygon<double>::make(v, shape.m_count);
+  if (!p.ok()) return std::nullopt;
+  return p.polygon;
+}
+
 }  // namespace
+
+Result<double> ExactConvexPair::exact(Level level) const {
+  ConvexQuery<double> q;
+  q.level = level;
+  return b ? collide(a, *b, q) : collide(a, circle, q);
+}
+
+double ExactConvexPair::overlap_along(const Vec2<double>& u) const {
+  double a_max = a.vertex(0).dot(u);
+  for (int i = 1; i < a.count(); ++i) a_max = std::max(a_max, a.vertex(i).dot(u));
+  if (!b) return a_max - (circle.center.dot(u) - circle.radius);
+  double b_min = b->vertex(0).dot(u);
+  for (int i = 1; i < b->count(); ++i) b_min = std::min(b_min, b->vertex(i).dot(u));
+  return a_max - b_min;
+}
+
+std::optional<ExactConvexPair> exact_convex_pair(const b2Contact& contact) {
+  const b2Fixture* fa = contact.GetFixtureA();
+  const b2Fixture* fb = contact.GetFixtureB();
+  if (fa->GetType() != b2Shape::e_polygon) return std::nullopt;
+  const auto& a = *static_cast<const b2PolygonShape*>(fa->GetShape());
+  const FrameBInA frame = frame_of(contact);
+  const std::optional<Polygon<double>> pa =
+      polygon_of(a, [](const b2Vec2& p) { return Vec2<double>(p.x, p.y); });
+  if (!pa) return std::nullopt;
+  if (fb->GetType() == b2Shape::e_circle) {
+    const auto& c = *static_cast<const b2CircleShape*>(fb->GetShape());
+    return ExactConvexPair{frame, *pa, std::nullopt, {frame.point(c.m_p), c.m_radius}};
+  }
+  if (fb->GetType() != b2Shape::e_polygon) return std::nullopt;
+  const auto& b = *static_cast<const b2PolygonShape*>(fb->GetShape());
+  if (a.m_count == 3 && b.m_count == 3) return std::nullopt;
+  const std::optional<Polygon<double>> pb =
+      polygon_of(b, [&](const b2Vec2& p) { return frame.point(p); });
+  if (!pb) return std::nullopt;
+  return ExactConvexPair{frame, *pa, pb, {}};
+}
 
 Vec2<double> FrameBInA::direction(const b2Vec2& d) const {
   const double x = d.x, y = d.y;
@@ -19,17 +76,10 @@ Vec2<double> FrameBInA::direction(const b2Vec2& d) const {
 }
 
 std::optional<ExactPair> exact_pair(const b2Contact& contact) {
-  const b2Fixture* fa = contact.GetFixtureA();
-  const b2Fixture* fb = contact.GetFixtureB();
-  const b2PolygonShape* a = triangle(fa);
-  const b2PolygonShape* b = triangle(fb);
+  const b2PolygonShape* a = triangle(contact.GetFixtureA());
+  const b2PolygonShape* b = triangle(contact.GetFixtureB());
   if (!a || !b) return std::nullopt;
-  const b2Transform& xa = fa->GetBody()->GetTransform();
-  const b2Transform& xb = fb->GetBody()->GetTransform();
-  const double ca = xa.q.c, sa = xa.q.s, cb = xb.q.c, sb = xb.q.s;
-  const double dx = double(xb.p.x) - double(xa.p.x), dy = double(xb.p.y) - double(xa.p.y);
-  const FrameBInA frame{ca * cb + sa * sb, ca * sb - sa * cb,
-                        Vec2<double>(ca * dx + sa * dy, -sa * dx + ca * dy)};
+  const FrameBInA frame = frame_of(contact);
   Vec2<double> va[3], vb[3];
   for (int i = 0; i < 3; ++i) {
     va[i] = Vec2<double>(a->m_vertices[i].x, a->m_vertices[i].y);

@@ -6,6 +6,8 @@
 
 #include <optional>
 
+#include "dyop/convex_pair.hpp"
+
 #include "dyop/triangle.hpp"
 #include "dyop/vec2.hpp"
 
@@ -35,5 +37,23 @@ struct ExactPair {
 /// The contact's triangles in A's frame; nothing when a fixture is not a triangle, or a triangle
 /// is rejected in double (`Triangle<double>::make`).
 std::optional<ExactPair> exact_pair(const b2Contact& contact);
+
+/// A contact beyond two triangles in A's body frame, in double: polygon A and polygon B (a side of
+/// 4 to 8 vertices) or circle B.
+struct ExactConvexPair {
+  FrameBInA b_in_a;                  ///< B's body frame in A's
+  Polygon<double> a;                 ///< A's polygon as its shape stores it
+  std::optional<Polygon<double>> b;  ///< B's polygon moved into A's frame, or nothing: a circle
+  Circle<double> circle;             ///< B's circle moved into A's frame, when `b` is nothing
+
+  /// The exact answer at `level` (`dyop::collide`).
+  Result<double> exact(Level level) const;
+  /// How deep the pair overlaps along the unit direction `u` (from A to B).
+  double overlap_along(const Vec2<double>& u) const;
+};
+
+/// The contact's shapes in A's frame when it is a polygon pair with a side of more than 3
+/// vertices or a polygon–circle pair; nothing otherwise, or when `Polygon<double>` rejects one.
+std::optional<ExactConvexPair> exact_convex_pair(const b2Contact& contact);
 
 }  // namespace dyop::scenes

@@ -49,27 +49,34 @@ void ManifoldCheck::PreSolve(b2Contact* contact, const b2Manifold*) {
   const b2Manifold& m = *contact->GetManifold();
   if (m.pointCount == 0) return;
   const std::optional<ExactPair> pair = exact_pair(*contact);
-  if (!pair) return;
+  const std::optional<ExactConvexPair> convex = pair ? std::nullopt : exact_convex_pair(*contact);
+  if (!pair && !convex) return;
+  const FrameBInA& frame = pair ? pair->b_in_a : convex->b_in_a;
   Vec2<double> normal;
-  const double deepest = deepest_separation(m, pair->b_in_a, &normal);
+  // A circle's point is its centre: the solver takes its radius off, and so does the check.
+  const double radius = convex && !convex->b ? convex->circle.radius : 0.0;
+  const double deepest = deepest_separation(m, frame, &normal) - radius;
+  record_kept(*contact, frame, deepest + radius);
 
+  const Result<double> exact = pair ? sat(pair->a, pair->b) : convex->exact(Level::Depth);
+  if (!(exact.separation < 0)) return;
+  ++errors_.checked;
+  errors_.depth_max = std::max(errors_.depth_max, std::abs(deepest - exact.separation));
+  const double along = pair ? overlap_along(*pair, normal) : convex->overlap_along(normal);
+  errors_.normal_max = std::max(errors_.normal_max, std::max(0.0, along - exact.depth));
+}
+
+void ManifoldCheck::record_kept(const b2Contact& contact, const FrameBInA& frame, double deepest) {
   // What the contact computes afresh for this pose: the manifold a kept one stands for.
   b2Manifold fresh;
-  box2d::measurement::evaluate_afresh(*contact, &fresh);
+  box2d::measurement::evaluate_afresh(contact, &fresh);
   ++errors_.touching;
   if (fresh.pointCount == 0) {
     ++errors_.stale;
   } else {
-    errors_.kept_max = std::max(
-        errors_.kept_max, std::abs(deepest - deepest_separation(fresh, pair->b_in_a, nullptr)));
+    errors_.kept_max =
+        std::max(errors_.kept_max, std::abs(deepest - deepest_separation(fresh, frame, nullptr)));
   }
-
-  const Result<double> exact = sat(pair->a, pair->b);
-  if (!(exact.separation < 0)) return;
-  ++errors_.checked;
-  errors_.depth_max = std::max(errors_.depth_max, std::abs(deepest - exact.separation));
-  errors_.normal_max =
-      std::max(errors_.normal_max, std::max(0.0, overlap_along(*pair, normal) - exact.depth));
 }
 
 }  // namespace dyop::scenes

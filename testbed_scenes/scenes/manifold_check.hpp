@@ -3,9 +3,10 @@
 /// Checks the manifolds a Box2D world's solver gets against the exact answer for the same pose:
 /// a contact listener whose `PreSolve` runs right after `b2Contact::Update` evaluated a touching
 /// contact (or kept its manifold: `box2d::Config::recycle_distance`), with the transforms that
-/// evaluation saw. Per touching triangle pair, every separation computed as the solver does
-/// (`b2WorldManifold`: a point's distance from the reference face, skins left out), in A's body
-/// frame in double:
+/// evaluation saw. Per touching pair, every separation computed as the solver does
+/// (`b2WorldManifold`: a point's distance from the reference face, skins left out, a circle's
+/// radius taken off), in A's body frame in double; polygon pairs of more vertices and
+/// polygon–circle pairs (the exact solver, `dyop::collide` in double) as triangle pairs:
 /// - what keeping costs: |the manifold's deepest separation − that of the manifold the runner
 ///   computes afresh for the same pose| (`box2d::measurement::evaluate_afresh`), and how many kept
 ///   manifolds had points where the fresh one has none;
@@ -17,6 +18,7 @@
 
 #include <box2d/b2_world_callbacks.h>
 
+#include "scenes/exact_pair.hpp"
 #include "scenes/metrics.hpp"
 
 namespace dyop::scenes {
@@ -29,6 +31,10 @@ class ManifoldCheck : public b2ContactListener {
   const ManifoldErrors& errors() const { return errors_; }
 
  private:
+  // Counts the touching pair and what keeping cost it: `deepest` against the deepest separation
+  // of the manifold the contact computes afresh (both as `deepest_separation` gives them).
+  void record_kept(const b2Contact& contact, const FrameBInA& frame, double deepest);
+
   ManifoldErrors errors_;
 };
 

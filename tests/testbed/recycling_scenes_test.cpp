@@ -62,6 +62,21 @@ TEST(Recycling, KeptManifoldsStayWithinTheBoundOfAFreshAnswer) {
   }
 }
 
+// The same promise for the pairs beyond triangles (boxes, hexagons and circles in the `crowd`
+// scene, kept on their own path).
+TEST(Recycling, KeptManifoldsOfBoxesHexagonsAndCirclesStayWithinTheBound) {
+  const float d = 0.02f;
+  const std::unique_ptr<scenes::Scene> crowd =
+      scenes::make_scene("crowd", Backend::Dyop, kSeed, recycling(d));
+  crowd->check_manifolds();
+  for (int i = 0; i < 150; ++i) crowd->step();
+  const scenes::SceneMetrics m = crowd->metrics();
+  ASSERT_TRUE(m.manifold_errors.has_value());
+  EXPECT_GT(m.recycled.value_or(0), 1000u);
+  EXPECT_GT(m.manifold_errors->touching, 10000u);
+  EXPECT_LE(m.manifold_errors->kept_max, 2 * d + face_hysteresis);
+}
+
 // Final states after 90 steps from seed 0 under `dyop` before recycling existed (the plug-in of
 // the previous landing, internal-edge rule on): with it off, the same worlds bit for bit.
 TEST(Recycling, OffIsBitIdenticalToThePlugInWithoutIt) {
