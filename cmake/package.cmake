@@ -1,7 +1,7 @@
 # Install rules and the CMake package: `cmake --install build --prefix P` puts the public headers,
 # the libraries and lib/cmake/dyop/ (dyopConfig.cmake, dyopConfigVersion.cmake, the exported
-# targets dyop::dyop and dyop::box2d_bridge) under P, so that a project finds them with
-# find_package(dyop CONFIG REQUIRED), and the licence in share/doc/dyop/ (a program that ships the
+# targets dyop::dyop, dyop::box2d_bridge and dyop::box2d_grounds) under P, so that a project
+# finds them with find_package(dyop CONFIG REQUIRED), and the licence in share/doc/dyop/ (a program that ships the
 # libraries must carry it: MIT). Included by the top-level CMakeLists.txt (DYOP_INSTALL).
 include(CMakePackageConfigHelpers)
 
@@ -9,8 +9,9 @@ set(DYOP_PACKAGE_TARGETS dyop)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/dyop/include/ ${PROJECT_BINARY_DIR}/dyop/include/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 if(DYOP_WITH_BOX2D)
-  list(APPEND DYOP_PACKAGE_TARGETS dyop_box2d_bridge)
+  list(APPEND DYOP_PACKAGE_TARGETS dyop_box2d_bridge dyop_box2d_grounds)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/box2d_bridge/include/
+                    ${PROJECT_SOURCE_DIR}/box2d_grounds/include/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 endif()
 

@@ -68,6 +68,14 @@ void fix_internal_edges(b2World& world) {
   detail::fix_fixtures(world, fixtures);
 }
 
+void fix_internal_edges(b2World& world, const std::vector<b2Fixture*>& fixtures) {
+  std::vector<b2Fixture*> polygons;
+  for (b2Fixture* f : fixtures) {
+    if (f && detail::holds_edge_data(*f)) polygons.push_back(f);
+  }
+  detail::fix_fixtures(world, polygons);
+}
+
 int refresh_internal_edges(b2World& world, const b2AABB& region) {
   detail::FixedInRegion query;
   world.QueryAABB(&query, region);

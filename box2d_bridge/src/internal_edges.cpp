@@ -351,16 +351,25 @@ ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
     }
   }
   for (int i = 0; i < n; ++i) {
+    const int before = i > 0 ? i - 1 : n - 1;
     const bool out_internal = (masks.edges >> i) & 1;
-    const bool in_internal = (masks.edges >> (i > 0 ? i - 1 : n - 1)) & 1;
+    const bool in_internal = (masks.edges >> before) & 1;
+    // An own edge covered in part, next to the vertex (a T-junction where rectangles of two
+    // heights meet under a flat top): as for an internal edge, the outline through the vertex
+    // decides. A triangulated ground's edges are covered wholly or not at all near their ends.
+    const bool covered_next_to =
+        out_internal || in_internal ||
+        opposite_cover_next_to(edges, lines[i], 0, tol, false, true).after ||
+        opposite_cover_next_to(edges, lines[before], lines[before].length, tol, true, false).before;
     // A corner of the outline made by this polygon's own two edges: every direction between
     // their normals is the outline's, as for a lone polygon.
-    if (!out_internal && !in_internal) continue;
+    if (!covered_next_to) continue;
     // Both edges internal: the vertex is inside the group, or on the outline between other
     // polygons' edges (a fan's apex touching the top), whose own pairs carry its contact with
     // their edges' normals; none of this polygon's pairs may push there.
     if (!(out_internal && in_internal)) {
-      // One edge internal: closed where the outline through the vertex is flat or reflex. Every
+      // One edge internal (or covered next to it): closed where the outline through the vertex
+      // is flat or reflex. Every
       // polygon touching the vertex is in the group found, so the outline pieces there are all
       // seen.
       VertexOutline outline;

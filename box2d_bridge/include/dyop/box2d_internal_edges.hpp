@@ -8,6 +8,7 @@
 #include <box2d/b2_world.h>
 
 #include <optional>
+#include <vector>
 
 #include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
@@ -25,7 +26,8 @@ namespace dyop::box2d {
 ///   at T-junctions. Points of two bodies are one point within a tolerance of 16·FLT_EPSILON of
 ///   their coordinates' magnitude (2 µm per metre from the origin), for the rounding of placing
 ///   each body's frame. An edge covered only in part stays an outline edge.
-/// - A vertex is closed when both of its edges are internal, or when one is and the outline (the
+/// - A vertex is closed when both of its edges are internal, or when one is (or is covered next to
+///   the vertex, as where rectangles of two heights meet under a flat top) and the outline (the
 ///   uncovered stretches of the group's edges) is flat or reflex there; a vertex lying inside
 ///   another triangle's edge takes that edge as the outline through it, straight.
 InternalEdges triangle_internal_edges(const b2Fixture& fixture);
@@ -48,6 +50,11 @@ void fix_internal_edges(b2Body& body);
 
 /// `fix_internal_edges` of every body of `world`.
 void fix_internal_edges(b2World& world);
+
+/// Fixes the edge data of `fixtures` (polygon fixtures of `world`; others are passed by) and finds
+/// it again for the fixed polygons next to them: for a builder that adds fixtures to a body that
+/// has others (a chunk of a tile map). Call between steps.
+void fix_internal_edges(b2World& world, const std::vector<b2Fixture*>& fixtures);
 
 /// Finds again the fixed edge data of every fixed triangle whose broad-phase box overlaps `region`
 /// (world frame, metres) and returns how many: the refresh after a hand change of a fixed ground.
