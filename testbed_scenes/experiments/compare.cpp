@@ -59,6 +59,10 @@ double narrowphase_ratio(const scenes::SceneMetrics& on, const scenes::SceneMetr
   return on.narrowphase_ns_per_pair / off.narrowphase_ns_per_pair;
 }
 
+int compare_steps(const CompareOptions& options, const scenes::SceneInfo& s) {
+  return options.steps.value_or(options.quick ? s.compare_quick_steps : s.default_steps);
+}
+
 int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
 std::vector<box2d::Backend> compare_backends(bool quick) {
@@ -95,7 +99,7 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
   const int total = static_cast<int>(scenes.size() * backends.size());
   int done = 0;
   for (const scenes::SceneInfo* s : scenes) {
-    const int steps = options.steps.value_or(options.quick ? s->quick_steps : s->default_steps);
+    const int steps = compare_steps(options, *s);
     for (box2d::Backend b : backends) {
       const double start = elapsed();
       scenes::Drawing final_state;

@@ -25,7 +25,7 @@
 namespace dyop::experiments {
 
 struct CompareOptions {
-  bool quick = false;                       ///< the catalogue's quick step counts
+  bool quick = false;                       ///< the catalogue's `compare_quick_steps`
   std::string out_dir = "reports/compare";  ///< where the report goes
   std::optional<int> steps;                 ///< every scene's step count (overrides the catalogue)
   std::uint64_t seed = 0;                   ///< every scene's seed
@@ -36,6 +36,10 @@ struct CompareOptions {
   /// skip section.
   box2d::Config skips;
 };
+
+/// Scene `s`'s step count in a comparison: `--steps`, or the catalogue's full count, or with
+/// `--quick` its `compare_quick_steps`. The main table and every section run these.
+int compare_steps(const CompareOptions& options, const scenes::SceneInfo& s);
 
 /// The backends of the main table: every backend in a full run; `--quick` (the main command's
 /// overview, kept to seconds) keeps `dyop`, what a user installs, and `box2d` (Box2D's own

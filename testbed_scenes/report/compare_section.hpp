@@ -27,10 +27,8 @@ struct SectionContext {
   std::ostream& progress;
   /// Seconds since the whole run started (for the progress lines' totals).
   std::function<double()> elapsed;
-  /// The scene's step count under the options (`--steps`, or the catalogue's full or quick one).
-  int steps(const scenes::SceneInfo& s) const {
-    return options.steps.value_or(options.quick ? s.quick_steps : s.default_steps);
-  }
+  /// The scene's step count under the options (`experiments::compare_steps`).
+  int steps(const scenes::SceneInfo& s) const { return experiments::compare_steps(options, s); }
   /// True when scene `name` is selected.
   bool selected(const std::string& name) const;
 };

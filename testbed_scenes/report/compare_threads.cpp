@@ -8,7 +8,7 @@ namespace dyop::report {
 namespace {
 
 // Steps of each world and runs of each runner: `dyop bench`'s (10 s of rain, 5 runs), or 2 s and
-// 3 runs with `--quick` (about 5 s in all).
+// 3 runs with `--quick` (about 5 s in all); `--steps` sets the steps, as for every scene.
 constexpr int kSteps = 600;
 constexpr int kRuns = 5;
 constexpr int kQuickSteps = 120;
@@ -21,7 +21,7 @@ class ThreadSection : public CompareSection {
   void run(const SectionContext& c) override {
     options_.scene = "rain";
     if (!c.selected(options_.scene)) return;
-    options_.steps = c.options.quick ? kQuickSteps : kSteps;
+    options_.steps = c.options.steps.value_or(c.options.quick ? kQuickSteps : kSteps);
     options_.runs = c.options.quick ? kQuickRuns : kRuns;
     options_.seed = c.options.seed;
     records_ = experiments::run_thread_scaling(options_, c.progress);

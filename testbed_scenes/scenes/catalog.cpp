@@ -15,60 +15,62 @@ struct Entry {
 const std::vector<Entry>& entries() {
   // Full runs: 10 to 15 s of simulated time (slide: 6 s, the length of its grounds at 6 m/s);
   // quick runs: 5 s, enough for everything dropped to land and for a structure that falls to
-  // show it.
+  // show it; `dyop compare --quick` (third count) runs the heaviest scenes shorter: their piles
+  // formed, everything landed, not settled.
   static const std::vector<Entry> list = {
       {{"paper", "the paper's experiment: 10 triangle types on fixed paths, 90 steps, n-body", 90,
-        90},
+        90, 90},
        nullptr},
-      {{"pyramid", "55 boxes of 2 triangle fixtures on a triangle ground (150 triangles)", 600,
+      {{"pyramid", "55 boxes of 2 triangle fixtures on a triangle ground (150 triangles)", 600, 300,
         300},
        detail::build_pyramid},
       {{"pyramid-rows", "100 triangle bodies in rows of alternating up and down triangles", 600,
-        300},
+        300, 300},
        detail::build_pyramid_rows},
-      {{"stack", "3 stacks of 10 boxes of 2 triangle fixtures on a triangle ground", 600, 300},
+      {{"stack", "3 stacks of 10 boxes of 2 triangle fixtures on a triangle ground", 600, 300, 300},
        detail::build_stack},
       {{"stack-concave", "24 L, U and star bodies (4 to 10 triangle fixtures) dropped in a bin",
-        900, 300},
+        900, 300, 300},
        detail::build_stack_concave},
-      {{"rain", "500 triangles of mixed sizes falling into a bin of triangle fixtures", 900, 300},
+      {{"rain", "500 triangles of mixed sizes falling into a bin of triangle fixtures", 900, 300,
+        150},
        detail::build_rain},
       {{"rain-tall",
         "1,500 triangles falling from up to 40 m into a bin of triangle fixtures: fast impacts, "
         "time of impact at work",
-        250, 150},
+        250, 150, 120},
        detail::build_rain_tall},
       {{"tumbler", "300 triangles in a kinematic drum of triangle fixtures turning at 0.3 rad/s",
-        900, 300},
+        900, 300, 150},
        detail::build_tumbler},
       {{"slivers", "thin (1/20 to 1/140), tiny (1-5 cm) and large (2-3 m) triangles in a bin", 600,
-        300},
+        300, 300},
        detail::build_slivers},
-      {{"slivers-far", "the slivers scene moved 10 km from the origin", 600, 300},
+      {{"slivers-far", "the slivers scene moved 10 km from the origin", 600, 300, 300},
        detail::build_slivers_far},
       {{"mixed",
         "triangles, boxes and circles on an edge ground: the edges keep Box2D's own contacts", 600,
-        300},
+        300, 300},
        detail::build_mixed},
       {{"crowd",
         "600 SetAsBox boxes, hexagons, circles and triangles poured into a bin of triangle "
         "fixtures: every pair family on a triangulated ground",
-        600, 300},
+        600, 300, 150},
        detail::build_crowd},
       {{"slide",
         "boxes, L bodies and wheels launched along grounds of triangulated cells, a box resting "
         "across a junction",
-        360, 300},
+        360, 300, 300},
        detail::build_slide},
       {{"tiles",
         "boxes, L bodies and wheels launched along grounds of 0.5 m tiles: one body, a body per "
         "tile, 8x8 chunks, T-junctions, tiles added and removed under the sliders",
-        360, 300},
+        360, 300, 300},
        detail::build_tiles},
       {{"tile-map",
         "a crowd on a tile map: 48 boxes and L bodies sliding at 3 m/s along 4 lanes of 0.5 m "
         "tiles as bodies, 60 triangles of debris falling onto a fifth",
-        360, 300},
+        360, 300, 300},
        detail::build_tile_map},
   };
   return list;
