@@ -1,8 +1,8 @@
 // A tile map for a game's everyday bodies: the solid cells of a grid merged into rectangles
 // (`dyop::box2d::TileGround`), a `SetAsBox` crate and a ball pushed along it at 4 m/s with the
 // plug-in installed, a pit dug in the map beyond where they stop. Prints each body's largest
-// vertical speed
-// (0 m/s: a glide, no ghost collision at the seams of the rectangles) and how far it went.
+// vertical speed (0 m/s: a glide, no ghost collision at the seams of the rectangles) and how far
+// it went.
 #include <box2d/box2d.h>
 
 #include <cmath>
