@@ -67,11 +67,6 @@ ShapeMasks masks_of(const b2Fixture& fixture) {
   return polygon_internal_edges(fixture);
 }
 
-// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: only then can masks change it.
-bool needs_masks(const Result<float>& r, float margin) {
-  return !(r.status == Status::Separated && r.separation > margin);
-}
-
 // Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
 // A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
 // the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.

@@ -32,13 +32,6 @@ Triangle<float> placed(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
-// any masks (`Query::internal_edges`, `Apart::Gap`; tested over every input class and edge mask in
-// the library's `InternalEdgesRule` test).
-bool needs_masks(const Result<float>& r, float margin) {
-  return !(r.status == Status::Separated && r.separation > margin);
-}
-
 }  // namespace
 
 // True when a world's contact holds no masks that hold now (`masks`; the rule on): none found

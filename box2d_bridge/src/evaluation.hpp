@@ -49,6 +49,13 @@ bool run_method(b2Manifold* manifold, const Setting& setting, const PolygonPair&
                 const b2Transform& b_in_a, ContactMemory& memory, const TriangleContact* contact,
                 FoundMasks* masks, const ManifoldRecycling* recycling);
 
+// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
+// any masks (`Query::internal_edges`, `ConvexQuery`'s masks, `Apart::Gap`; tested over every input
+// class and edge mask in the library's `InternalEdgesRule` test), for every pair family.
+inline bool needs_masks(const Result<float>& r, float margin) {
+  return !(r.status == Status::Separated && r.separation > margin);
+}
+
 // Writes the solver's manifold `mf` (computed in A's body frame; `b_in_a`: B's body frame given in
 // A's) as Box2D's: the reference face from the polygon's own data, points in the incident body's
 // frame, the solver's keys.
