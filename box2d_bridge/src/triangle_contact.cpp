@@ -11,7 +11,6 @@
 
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_measurement.hpp"
-#include "convex_evaluation.hpp"
 #include "evaluation.hpp"
 #include "internal_edges.hpp"
 #include "installation.hpp"
@@ -179,8 +178,8 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
   if (!(a && b))
     for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
-      if (&c == this || beyond_triangles(c.memory_) || c.masks_.stamp != stamp ||
-          !c.masks_.settled() || c.masks_.fixtures != fixtures) {
+      if (&c == this || family_of(c.memory_.shapes) != Family::Triangles ||
+          c.masks_.stamp != stamp || !c.masks_.settled() || c.masks_.fixtures != fixtures) {
         return true;
       }
       const InternalEdges m = c.memory_.internal_edges;
@@ -216,69 +215,82 @@ std::optional<InternalEdges> TriangleContact::half_from_body(const b2Fixture& fi
 }
 
 TriangleContact::TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b)
-    : b2Contact(fixture_a, 0, fixture_b, 0) {}
-
-// One evaluation, top down: keep the last manifold, else skip, else answer afresh (masks, the
-// method, the manifold written, the pose remembered: `detail::answer`). Each act is a jump away,
-// so that a kept manifold (resting scenes) and a skip (rains) pay no register saves for the acts
-// after them, and the cold path is marked cold.
-void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
-                               const b2Transform& xf_b) {
-  if (recycling_.slack > 0) return keep_or_go_on(manifold, xf_a, xf_b);
-  skip_or_answer(manifold, xf_a, xf_b);
+    : b2Contact(fixture_a, 0, fixture_b, 0) {
+  // The pair's family, once: the shapes of a fixture never change.
+  const auto& a = *static_cast<const b2PolygonShape*>(fixture_a->GetShape());
+  if (fixture_b->GetType() == b2Shape::e_circle) {
+    look_at_shapes(a, *static_cast<const b2CircleShape*>(fixture_b->GetShape()), memory_);
+  } else {
+    look_at_shapes(a, *static_cast<const b2PolygonShape*>(fixture_b->GetShape()), memory_);
+  }
 }
 
-[[gnu::noinline]] void TriangleContact::keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a,
+template <>
+TrianglePair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
+  return {polygon_a(), xf_a, *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
+}
+template <>
+PolygonPair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
+  return {polygon_a(), xf_a, *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
+}
+template <>
+PolygonCirclePair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
+  return {polygon_a(), xf_a, *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b};
+}
+
+template <class Pair>
+[[gnu::noinline]] void TriangleContact::keep_or_go_on(TriangleContact& c, b2Manifold* manifold,
+                                                      const b2Transform& xf_a,
                                                       const b2Transform& xf_b) {
-  // Pairs beyond two triangles keep theirs on their own path (convex_evaluation.cpp).
-  if (beyond_triangles(memory_)) return evaluate_cold(manifold, xf_a, xf_b);
-  if (detail::keep(*manifold, installation().setting, pair(xf_a, xf_b), memory_, recycling_, this,
-                   &masks_)) {
+  const Setting& setting = installation().setting;
+  const Pair pair = c.pair_at<Pair>(xf_a, xf_b);
+  if (keep<Pair>(*manifold, setting, pose_of(pair, c.memory_), c.memory_, c.recycling_, &c,
+                 &c.masks_)) {
     return;
   }
-  skip_or_answer(manifold, xf_a, xf_b);
+  skip_or_answer<Pair>(c, manifold, xf_a, xf_b);
 }
 
-[[gnu::noinline]] void TriangleContact::skip_or_answer(b2Manifold* manifold,
+template <class Pair>
+[[gnu::noinline]] void TriangleContact::skip_or_answer(TriangleContact& c, b2Manifold* manifold,
                                                        const b2Transform& xf_a,
                                                        const b2Transform& xf_b) {
-  const Setting& setting = installation().setting;
-  if (!setting.backend || !triangle_shapes(memory_)) return evaluate_cold(manifold, xf_a, xf_b);
-  const b2Transform b_in_a = b2MulT(xf_a, xf_b);
-  if (detail::skip(manifold, setting, pair(xf_a, xf_b), b_in_a, memory_, &recycling_)) return;
-  answer(manifold, xf_a, xf_b, b_in_a);
+  detail::skip_or_answer(manifold, installation().setting, c.pair_at<Pair>(xf_a, xf_b), c.memory_,
+                         &c, &c.masks_, &c.recycling_);
 }
 
-PolygonPair TriangleContact::pair(const b2Transform& xf_a, const b2Transform& xf_b) const {
-  // The registry dispatches only polygon–polygon pairs here.
-  return {*static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
-          *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
+// Each act's function for each pair family, indexed by `ContactMemory::Shapes` (decided when the
+// contact was made): one indirect call to the path of the pair's family, as Box2D v3's table of
+// manifold functions per shape pair.
+struct TriangleContact::Paths {
+  void (*keep_or_go_on)(TriangleContact&, b2Manifold*, const b2Transform&, const b2Transform&);
+  void (*skip_or_answer)(TriangleContact&, b2Manifold*, const b2Transform&, const b2Transform&);
+};
+
+template <class Pair>
+constexpr TriangleContact::Paths TriangleContact::paths_of() {
+  return {&TriangleContact::keep_or_go_on<Pair>, &TriangleContact::skip_or_answer<Pair>};
 }
 
-[[gnu::noinline]] void TriangleContact::answer(b2Manifold* manifold, const b2Transform& xf_a,
-                                               const b2Transform& xf_b, const b2Transform& b_in_a) {
-  detail::answer(manifold, installation().setting, pair(xf_a, xf_b), b_in_a, memory_, this, &masks_,
-                 &recycling_);
-}
+const TriangleContact::Paths TriangleContact::paths[] = {
+    paths_of<TrianglePair>(),       // Unchecked: never, a contact looks at its shapes when made
+    paths_of<TrianglePair>(),       // Triangles
+    paths_of<TrianglePair>(),       // InvalidTriangles
+    paths_of<TrianglePair>(),       // UnvalidatedTriangles
+    paths_of<PolygonPair>(),        // Polygons
+    paths_of<PolygonPair>(),        // InvalidPolygons
+    paths_of<PolygonCirclePair>(),  // PolygonAndCircle
+    paths_of<PolygonCirclePair>(),  // InvalidPolygonAndCircle
+};
+static_assert(static_cast<int>(ContactMemory::Shapes::InvalidPolygonAndCircle) == 7,
+              "one path per value of ContactMemory::Shapes");
 
-[[gnu::noinline, gnu::cold]] void TriangleContact::evaluate_cold(b2Manifold* manifold,
-                                                                 const b2Transform& xf_a,
-                                                                 const b2Transform& xf_b) {
-  evaluate_with(manifold, installation().setting, xf_a, xf_b, memory_, &masks_, &recycling_);
-}
-
-void TriangleContact::evaluate_with(b2Manifold* manifold, const Setting& setting,
-                                    const b2Transform& xf_a, const b2Transform& xf_b,
-                                    ContactMemory& memory, FoundMasks* masks,
-                                    ManifoldRecycling* recycling) const {
-  if (m_fixtureB->GetType() == b2Shape::e_circle) {
-    evaluate_polygon_circle(manifold, setting,
-                            *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a,
-                            *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b,
-                            memory, this, masks, recycling);
-    return;
-  }
-  evaluate(manifold, setting, pair(xf_a, xf_b), memory, this, masks, recycling);
+// One evaluation: keep, else skip or answer (evaluation.hpp), on the path of the pair's family.
+void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
+                               const b2Transform& xf_b) {
+  const Paths& path = paths[static_cast<int>(memory_.shapes)];
+  if (recycling_.slack > 0) return path.keep_or_go_on(*this, manifold, xf_a, xf_b);
+  path.skip_or_answer(*this, manifold, xf_a, xf_b);
 }
 
 void TriangleContact::fresh_manifold(b2Manifold* manifold) const {
@@ -286,8 +298,19 @@ void TriangleContact::fresh_manifold(b2Manifold* manifold) const {
   FoundMasks masks = masks_;
   Setting setting = installation().setting;
   setting.never_recompute = false;
-  evaluate_with(manifold, setting, m_fixtureA->GetBody()->GetTransform(),
-                m_fixtureB->GetBody()->GetTransform(), memory, &masks, nullptr);
+  const b2Transform& xf_a = m_fixtureA->GetBody()->GetTransform();
+  const b2Transform& xf_b = m_fixtureB->GetBody()->GetTransform();
+  switch (family_of(memory.shapes)) {
+    case Family::Triangles:
+      return detail::skip_or_answer(manifold, setting, pair_at<TrianglePair>(xf_a, xf_b), memory,
+                                    this, &masks);
+    case Family::Polygons:
+      return detail::skip_or_answer(manifold, setting, pair_at<PolygonPair>(xf_a, xf_b), memory,
+                                    this, &masks);
+    case Family::PolygonAndCircle:
+      return detail::skip_or_answer(manifold, setting, pair_at<PolygonCirclePair>(xf_a, xf_b),
+                                    memory, this, &masks);
+  }
 }
 
 }  // namespace dyop::box2d::detail

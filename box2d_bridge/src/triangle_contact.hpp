@@ -14,7 +14,7 @@
 #include "edge_data.hpp"
 #include "found_masks.hpp"
 #include "installation.hpp"
-#include "polygon_pair.hpp"
+#include "pair_families.hpp"
 #include "recycling.hpp"
 
 namespace dyop::box2d::detail {
@@ -109,9 +109,8 @@ class TriangleContact final : public b2Contact {
   // the fixture count it would have now, and the count never seen to move since: it may have
   // come back by other changes), else nothing.
   std::optional<InternalEdges> current_internal_edges(std::uint8_t epoch) const {
-    if (memory_.shapes >= ContactMemory::Shapes::Polygons || !masks_.settled() ||
-        masks_.stamp == 0 || masks_.stamp != internal_edges_stamp(epoch) ||
-        masks_.fixtures != world_fixtures()) {
+    if (family_of(memory_.shapes) != Family::Triangles || !masks_.settled() || masks_.stamp == 0 ||
+        masks_.stamp != internal_edges_stamp(epoch) || masks_.fixtures != world_fixtures()) {
       return std::nullopt;
     }
     return memory_.internal_edges;
@@ -148,28 +147,38 @@ class TriangleContact final : public b2Contact {
   // contact list is short (a static body's spans the world).
   std::optional<InternalEdges> half_from_body(const b2Fixture& fixture, std::uint8_t epoch) const;
 
-  // The evaluation with `setting` of its pair (a polygon pair or a polygon and a circle) from
-  // `memory` and its masks' record `masks`, keeping nothing when `recycling` is nullptr.
-  void evaluate_with(b2Manifold* manifold, const Setting& setting, const b2Transform& xf_a,
-                     const b2Transform& xf_b, ContactMemory& memory, FoundMasks* masks,
-                     ManifoldRecycling* recycling) const;
+  // Its polygon (fixture A: the registry hands polygon–polygon and polygon–circle pairs here).
+  const b2PolygonShape& polygon_a() const {
+    return *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
+  }
+  // Its pair as its family's (`TrianglePair`, `PolygonPair`, `PolygonCirclePair`) at the bodies'
+  // transforms `xf_a`, `xf_b`.
+  template <class Pair>
+  Pair pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const;
 
-  // Its two shapes with the bodies' transforms (a polygon pair).
-  PolygonPair pair(const b2Transform& xf_a, const b2Transform& xf_b) const;
-
-  // `Evaluate`'s paths out of line (see there): keep, else go on to skip or answer; skip or
-  // answer, once nothing was kept; answer afresh (`b_in_a`: B's body frame given in A's); the
-  // cold path (uninstalled, shapes not yet looked at, larger polygons).
-  void keep_or_go_on(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
-  void skip_or_answer(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
-  void answer(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b,
-              const b2Transform& b_in_a);
-  void evaluate_cold(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b);
+  // `Evaluate`'s two paths for contact `c` of a pair family: keep, else skip or answer; skip or
+  // answer. Static: `Paths` holds plain function pointers.
+  template <class Pair>
+  static void keep_or_go_on(TriangleContact& c, b2Manifold* manifold, const b2Transform& xf_a,
+                            const b2Transform& xf_b);
+  template <class Pair>
+  static void skip_or_answer(TriangleContact& c, b2Manifold* manifold, const b2Transform& xf_a,
+                             const b2Transform& xf_b);
+  struct Paths;
+  template <class Pair>
+  static constexpr Paths paths_of();
+  static const Paths paths[];
 
   ContactMemory memory_;
   FoundMasks masks_;
   ManifoldRecycling recycling_;
 };
+
+bool TrianglePair::fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
+  const std::optional<InternalEdges> fixed = contact.fixed_internal_edges();
+  if (fixed) memory.internal_edges = *fixed;
+  return fixed.has_value();
+}
 
 // Makes every contact of the plug-in with `fixture` compute afresh at its next evaluation.
 void recompute_contacts_of(const b2Fixture& fixture);

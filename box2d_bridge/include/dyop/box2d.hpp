@@ -234,13 +234,14 @@ struct ContactMemory {
     Polygons,
     InvalidPolygons,   ///< a side with more than 3 vertices that `Polygon<float>` refuses: Box2D
     PolygonAndCircle,  ///< a polygon (A) and a circle (B): `dyop::collide`, or Box2D's own
+    InvalidPolygonAndCircle,  ///< a polygon and a circle, one refused (`ConvexError`): Box2D
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
   PairState warm_start;
   /// The face the last evaluation judged the pair on: 0..2 A's edges, 3..5 B's, -1 none yet
   /// (`Config::warm_axis`).
   std::int8_t last_face = -1;
-  Shapes shapes = Shapes::Unchecked;  ///< set by the first evaluation
+  Shapes shapes = Shapes::Unchecked;  ///< set when a world's contact is made, or by the first call
   /// Triangles: the sum of the two shapes' bounding radii about their centroids (metres;
   /// `Config::bounds_early_out`).
   float radius_sum = 0;

@@ -1,0 +1,262 @@
+#pragma once
+// Internal: the pair families the plug-in's contact answers — two triangles, two polygons (a side
+// with more than 3 vertices), a polygon and a circle — each as what the acts of an evaluation
+// need of it (evaluation.hpp: keep, skip, answer, written once for every family): where the pair
+// is, a face's separation, its internal-edge masks, its manifold function (the solver's answer,
+// written as Box2D's manifold) and Box2D's own function. A world's contact learns its family once,
+// when it is made (`family_of`).
+
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "dyop/box2d.hpp"
+#include "dyop/convex_pair.hpp"
+#include "found_masks.hpp"
+#include "installation.hpp"
+#include "recycling.hpp"
+#include "stats.hpp"
+
+namespace dyop::box2d::detail {
+
+class TriangleContact;
+
+enum class Family : std::uint8_t { Triangles, Polygons, PolygonAndCircle };
+
+// The family of a pair whose shapes were looked at (`look_at_shapes`).
+inline Family family_of(ContactMemory::Shapes shapes) {
+  using Shapes = ContactMemory::Shapes;
+  if (shapes >= Shapes::PolygonAndCircle) return Family::PolygonAndCircle;
+  return shapes >= Shapes::Polygons ? Family::Polygons : Family::Triangles;
+}
+
+// What the first look at two polygons finds (their `Shapes` and bounding radii, kept in
+// `memory`: the shapes of a fixture never change). Triangles are validated later, by the first
+// answer that runs the method (`TrianglePair::accepted`): most contacts a broad phase makes never
+// run it (docs/measurements.md, "Choices in the code").
+void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory);
+// The same for a polygon and a circle.
+void look_at_shapes(const b2PolygonShape& a, const b2CircleShape& b, ContactMemory& memory);
+
+// True when `Polygon<float>` accepts the shape's vertices (Box2D's hull may keep vertices that are
+// collinear within rounding, or a sliver).
+bool valid_polygon(const b2PolygonShape& shape);
+
+// Distance from the shape's centroid to its farthest vertex (body frame).
+float bounding_radius(const b2PolygonShape& shape);
+
+// Where a pair is, for keeping, skipping and remembering its manifold.
+struct PairPose {
+  b2Transform b_in_a;  // B's body frame given in A's
+  b2Vec2 centroid_b;   // B's centroid in its body frame (a circle's centre)
+  float margin;        // the skins (metres): manifold points are kept up to this far apart
+  float radius_sum;    // the shapes' bounding radii summed (`ContactMemory::radius_sum`, metres)
+
+  // The motion bound's lever (`recycle_lever`).
+  float lever() const { return recycle_lever(radius_sum, margin); }
+};
+
+// Separation of two polygons along face `face` (A's edge `face`, or B's edge `face − a.m_count`;
+// `b_in_a`: B's body frame given in A's), with the other polygon's whole support: a lower bound
+// on their distance. The face's normal is rotated into the other body's frame, so the other's
+// vertices are used as its shape holds them. `N`: the vertex count of both when known at compile
+// time (triangles), else 0.
+template <int N>
+[[gnu::always_inline]] inline float face_separation(int face, const b2PolygonShape& a,
+                                                    const b2PolygonShape& b,
+                                                    const b2Transform& b_in_a) {
+  const auto least_along = [](const b2Vec2& n, const b2PolygonShape& shape) {
+    const int count = N > 0 ? N : shape.m_count;
+    float least = b2Dot(n, shape.m_vertices[0]);
+    for (int i = 1; i < count; ++i) least = std::min(least, b2Dot(n, shape.m_vertices[i]));
+    return least;
+  };
+  const int count_a = N > 0 ? N : a.m_count;
+  if (face < count_a) {
+    const b2Vec2& n = a.m_normals[face];
+    return least_along(b2MulT(b_in_a.q, n), b) + b2Dot(n, b_in_a.p - a.m_vertices[face]);
+  }
+  const int e = face - count_a;
+  const b2Vec2& n = b.m_normals[e];
+  const b2Vec2 m = b2Mul(b_in_a.q, n);  // B's normal in A's frame
+  return least_along(m, a) - b2Dot(m, b_in_a.p) - b2Dot(n, b.m_vertices[e]);
+}
+
+// Beyond this separation along any one face normal (metres), for skins summing to `margin`, a
+// manifold has no point: the reference face the full evaluation picks separates the pair by at
+// least that face's separation minus `face_hysteresis` (it is the best face of A or B, B's only
+// when it beats A's by the hysteresis), and every clipped point lies on the incident edge, at
+// least as far from the reference line as the nearer of its ends. So a face whose separation
+// exceeds margin + face_hysteresis proves the manifold empty, exactly.
+inline float face_reach(float margin) { return margin + face_hysteresis; }
+
+// The face the solver judged a pair on (`ContactMemory::last_face`: A's edges first, then B's).
+inline std::int8_t judged_face(const Manifold<float>& m, int count_a) {
+  return static_cast<std::int8_t>(m.reference_edge + (m.reference_is_a ? 0 : count_a));
+}
+
+// Two triangles: the setting's method (DyOP-PD for `Backend::Dyop`), Box2D's `b2CollidePolygons`
+// for `Backend::Box2D`, for a triangle the method refuses and for a method that cannot answer.
+struct TrianglePair {
+  using Query = dyop::Query<float>;
+
+  const b2PolygonShape& a;
+  const b2Transform& xf_a;
+  const b2PolygonShape& b;
+  const b2Transform& xf_b;
+
+  float margin() const { return a.m_radius + b.m_radius; }  // the skins, as Box2D's
+  b2Vec2 centroid_b() const { return b.m_centroid; }
+  // The plug-in's solver answers under `setting` (else Box2D's function).
+  static bool solver_on(const Setting& setting) { return setting.method.has_value(); }
+  // The internal-edge rule is in force under `setting` (the method honours the masks).
+  static bool rule(const Setting& setting) { return setting.internal_edges; }
+  // The solver takes the shapes: validated at the first answer that asks.
+  bool accepted(ContactMemory& memory) const;
+  float face_separation(int face, const PairPose& pose) const {
+    return detail::face_separation<3>(face, a, b, pose.b_in_a);
+  }
+  // What the empty manifold just answered proves of the gap beyond a manifold's reach: its
+  // judged face's separation minus `face_reach` (metres; at most 0 when none).
+  float gap(const Result<float>&, const PairPose& pose, const ContactMemory& memory) const {
+    return memory.last_face < 0 ? 0
+                                : face_separation(memory.last_face, pose) - face_reach(pose.margin);
+  }
+  static void take_masks(Query& q, const ContactMemory& memory) {
+    q.internal_edges = memory.internal_edges;
+  }
+  static bool any_masks(const Query& q) { return q.internal_edges.any(); }
+  // Both fixtures' fixed edge data into `memory`; false (nothing written) unless both have it.
+  // Inline (triangle_contact.hpp): every answer with the rule on asks.
+  static inline bool fixed_masks(const TriangleContact& contact, ContactMemory& memory);
+  // Masks found for `contact` now (`TriangleContact::find_internal_edges`) into `memory`.
+  static void find_masks(const TriangleContact& contact, const FoundMasks& masks,
+                         std::uint8_t epoch, ContactMemory& memory);
+  Result<float> solve(const Setting& setting, const Query& q, const PairPose& pose,
+                      ContactMemory& memory) const;
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
+  void box2d(b2Manifold* manifold) const { b2CollidePolygons(manifold, &a, xf_a, &b, xf_b); }
+  // An evaluation kept or answered (`count`) or skipped (`count_skip`), on `to`.
+  static void count(ThreadCounters& to, const Setting& setting, const ContactMemory&) {
+    to.triangle_pairs[static_cast<int>(*setting.backend)].add();
+  }
+  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory&,
+                         Skip reason) {
+    to.skipped[static_cast<int>(*setting.backend)][static_cast<int>(reason)].add();
+  }
+};
+
+// What the pairs beyond two triangles share: answered exactly (`dyop::collide`) under every
+// backend but `Box2D` and `Config::triangles_only`, with the masks of each shape (`ShapeMasks`:
+// A's in `ContactMemory::internal_edges`, B's in `masks_b`).
+struct ExactPair {
+  using Query = ConvexQuery<float>;
+
+  static bool solver_on(const Setting& setting) {
+    return setting.backend != Backend::Box2D && !setting.config.triangles_only;
+  }
+  static bool rule(const Setting& setting) { return setting.config.internal_edges; }
+  // The empty manifold's gap: the solver's (`Apart::Gap`) beyond a manifold's reach.
+  static float gap(const Result<float>& r, const PairPose& pose, const ContactMemory&) {
+    return r.status == Status::Separated ? r.separation - face_reach(pose.margin) : 0;
+  }
+  static void take_masks(Query& q, const ContactMemory& memory) {
+    q.masks_a = {memory.internal_edges.edges, memory.internal_edges.closed_vertices};
+    q.masks_b = memory.masks_b;
+  }
+  static bool any_masks(const Query& q) { return q.masks_a.any() || q.masks_b.any(); }
+
+ protected:
+  // `TrianglePair::fixed_masks` and `find_masks` for these pairs: A's polygon, and B's when
+  // `b_has_edges` (a circle has no edge: its masks stay empty).
+  static bool fixed_masks_of(const TriangleContact& contact, bool b_has_edges,
+                             ContactMemory& memory);
+  static void find_masks_of(const TriangleContact& contact, bool b_has_edges,
+                            ContactMemory& memory);
+};
+
+// Two polygons, one of more than 3 vertices.
+struct PolygonPair : ExactPair {
+  const b2PolygonShape& a;
+  const b2Transform& xf_a;
+  const b2PolygonShape& b;
+  const b2Transform& xf_b;
+
+  PolygonPair(const b2PolygonShape& shape_a, const b2Transform& xfa, const b2PolygonShape& shape_b,
+              const b2Transform& xfb)
+      : a(shape_a), xf_a(xfa), b(shape_b), xf_b(xfb) {}
+  float margin() const { return a.m_radius + b.m_radius; }
+  b2Vec2 centroid_b() const { return b.m_centroid; }
+  static bool accepted(const ContactMemory& memory) {
+    return memory.shapes == ContactMemory::Shapes::Polygons;
+  }
+  float face_separation(int face, const PairPose& pose) const {
+    return detail::face_separation<0>(face, a, b, pose.b_in_a);
+  }
+  static bool fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
+    return fixed_masks_of(contact, true, memory);
+  }
+  static void find_masks(const TriangleContact& contact, const FoundMasks&, std::uint8_t,
+                         ContactMemory& memory) {
+    find_masks_of(contact, true, memory);
+  }
+  Result<float> solve(const Setting&, const Query& q, const PairPose& pose, ContactMemory&) const;
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
+  void box2d(b2Manifold* manifold) const { b2CollidePolygons(manifold, &a, xf_a, &b, xf_b); }
+  static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
+    to.polygon_pairs.add();
+    if (solver_on(setting) && accepted(memory)) to.exact_pairs.add();
+  }
+  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
+                         Skip) {
+    count(to, setting, memory);
+  }
+};
+
+// A polygon (fixture A) and a circle (fixture B), in Box2D's registry order; its manifolds are
+// `e_faceA`, as Box2D's (see `write`).
+struct PolygonCirclePair : ExactPair {
+  const b2PolygonShape& a;
+  const b2Transform& xf_a;
+  const b2CircleShape& b;
+  const b2Transform& xf_b;
+
+  PolygonCirclePair(const b2PolygonShape& shape_a, const b2Transform& xfa,
+                    const b2CircleShape& shape_b, const b2Transform& xfb)
+      : a(shape_a), xf_a(xfa), b(shape_b), xf_b(xfb) {}
+  // The polygon's skin: `b2CollidePolygonAndCircle` keeps a point up to the two radii's sum.
+  float margin() const { return a.m_radius; }
+  b2Vec2 centroid_b() const { return b.m_p; }
+  static bool accepted(const ContactMemory& memory) {
+    return memory.shapes == ContactMemory::Shapes::PolygonAndCircle;
+  }
+  // The circle beyond the line of A's face `face`: apart at least that far.
+  float face_separation(int face, const PairPose& pose) const {
+    return b2Dot(a.m_normals[face], b2Mul(pose.b_in_a, b.m_p) - a.m_vertices[face]) - b.m_radius;
+  }
+  static bool fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
+    return fixed_masks_of(contact, false, memory);
+  }
+  static void find_masks(const TriangleContact& contact, const FoundMasks&, std::uint8_t,
+                         ContactMemory& memory) {
+    find_masks_of(contact, false, memory);
+  }
+  Result<float> solve(const Setting&, const Query& q, const PairPose& pose, ContactMemory&) const;
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
+  void box2d(b2Manifold* manifold) const {
+    b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
+  }
+  static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
+    to.circle_pairs.add();
+    if (solver_on(setting) && accepted(memory)) to.exact_pairs.add();
+  }
+  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
+                         Skip) {
+    count(to, setting, memory);
+  }
+};
+
+}  // namespace dyop::box2d::detail
