@@ -1,6 +1,7 @@
 # Install rules and the CMake package: `cmake --install build --prefix P` puts the public headers,
 # the libraries and lib/cmake/dyop/ (dyopConfig.cmake, dyopConfigVersion.cmake, the exported
-# targets dyop::dyop, dyop::box2d_bridge and dyop::box2d_grounds) under P, so that a project
+# targets dyop::dyop, dyop::box2d_bridge, dyop::box2d_grounds and, built with GEOS,
+# dyop::box2d_outlines) under P, so that a project
 # finds them with find_package(dyop CONFIG REQUIRED), and the licence in share/doc/dyop/ (a program that ships the
 # libraries must carry it: MIT). Included by the top-level CMakeLists.txt (DYOP_INSTALL).
 include(CMakePackageConfigHelpers)
@@ -10,6 +11,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/dyop/include/ ${PROJECT_BINARY_DIR}/dyop
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
 if(DYOP_WITH_BOX2D)
   list(APPEND DYOP_PACKAGE_TARGETS dyop_box2d_bridge dyop_box2d_grounds)
+  if(TARGET dyop_box2d_outlines)
+    list(APPEND DYOP_PACKAGE_TARGETS dyop_box2d_outlines)
+  endif()
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/box2d_bridge/include/
                     ${PROJECT_SOURCE_DIR}/box2d_grounds/include/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
@@ -36,6 +40,11 @@ install(TARGETS ${DYOP_PACKAGE_TARGETS} EXPORT dyopTargets
 set(DYOP_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/dyop)
 install(EXPORT dyopTargets NAMESPACE dyop:: DESTINATION ${DYOP_PACKAGE_DIR})
 
+if(TARGET dyop_box2d_outlines)
+  set(DYOP_WITH_OUTLINES TRUE)
+else()
+  set(DYOP_WITH_OUTLINES FALSE)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/dyopConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/dyopConfig.cmake
                               INSTALL_DESTINATION ${DYOP_PACKAGE_DIR})

@@ -11,6 +11,7 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
           libcli11-dev libgmp-dev nlohmann-json3-dev zlib1g-dev gnuplot-nox
+          libgeos-dev                # for dyop::box2d_outlines (grounds from outlines)
           clang libclang-rt-14-dev   # for scripts/fuzz.sh (libFuzzer)
           doxygen                    # for scripts/api_docs.sh (the API reference)
           clang-format)              # for scripts/format_check.sh (one code format)

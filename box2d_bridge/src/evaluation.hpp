@@ -136,9 +136,9 @@ template <class Pair>
 // nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
 // `FoundMasks::motion`), nullptr for none.
 template <class Pair>
-Result<float> solve_with_masks(const Setting& setting, const Pair& pair, const PairPose& pose,
-                               ContactMemory& memory, const TriangleContact* contact,
-                               FoundMasks* masks, const ManifoldRecycling* recycling) {
+[[gnu::always_inline]] inline Result<float> solve_with_masks(
+    const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
+    const TriangleContact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
   typename Pair::Query q;
   q.level = Level::Manifold;
   q.margin = pose.margin;  // the skins: speculative, as Box2D's

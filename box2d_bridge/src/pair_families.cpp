@@ -3,9 +3,6 @@
 #include <cmath>
 #include <optional>
 
-#include "detail/polygon_circle.hpp"
-#include "detail/polygon_pair.hpp"
-#include "detail/validated_size.hpp"
 #include "edge_data.hpp"
 #include "internal_edges.hpp"
 #include "triangle_contact.hpp"
@@ -35,50 +32,6 @@ Triangle<float> triangle(const b2PolygonShape& shape, const b2Transform& xf) {
   return Triangle<float>::from_validated(vertices(shape), normals(shape), xf.q.c, xf.q.s,
                                          vec(xf.p));
 }
-
-// A `b2PolygonShape` in its body frame as the solver reads a polygon
-// (`detail::collide_polygon_circle`, `detail::collide_polygons`), in place: what
-// `Polygon<float>::from_validated` would hold, without building it.
-class InPlace {
- public:
-  explicit InPlace(const b2PolygonShape& shape)
-      : shape_(shape),
-        size_(dyop::detail::validated_size<float>(
-            shape.m_count, [&](int i) { return vertex(i); }, [&](int i) { return normal(i); })) {}
-  int count() const { return shape_.m_count; }
-  Vec2<float> vertex(int i) const { return {shape_.m_vertices[i].x, shape_.m_vertices[i].y}; }
-  Vec2<float> normal(int i) const { return {shape_.m_normals[i].x, shape_.m_normals[i].y}; }
-  int next(int i) const { return i + 1 < shape_.m_count ? i + 1 : 0; }
-  float size() const { return size_; }
-  // Box2D's vertices are CCW: the caller's order is the solver's.
-  static int input_vertex(int i) { return i; }
-  static int input_edge(int i) { return i; }
-
- private:
-  const b2PolygonShape& shape_;
-  float size_;
-};
-
-// A `b2PolygonShape` placed by `xf` (B's body frame in A's) as the solver reads a polygon
-// (`detail::collide_polygons`): what `Polygon<float>::from_validated` with the transform would
-// hold (its size measured in the body frame), each vertex and normal placed when read (the
-// solver's frame reads each once).
-class Placed : public InPlace {
- public:
-  Placed(const b2PolygonShape& shape, const b2Transform& xf) : InPlace(shape), xf_(xf) {}
-  Vec2<float> vertex(int i) const {
-    return turn(InPlace::vertex(i)) + Vec2<float>(xf_.p.x, xf_.p.y);
-  }
-  Vec2<float> normal(int i) const { return turn(InPlace::normal(i)); }
-
- private:
-  Vec2<float> turn(const Vec2<float>& v) const {
-    const float c = xf_.q.c;
-    const float s = xf_.q.s;
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-  }
-  const b2Transform& xf_;
-};
 
 // The masks a fixture's pairs read: its fixed edge data, else found now.
 ShapeMasks masks_of(const b2Fixture& fixture) {
@@ -222,25 +175,12 @@ void ExactPair::find_masks_of(const TriangleContact& contact, bool b_has_edges,
 
 // Two polygons.
 
-Result<float> PolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
-                                 ContactMemory&) const {
-  // The solver inlined here, reading the shapes in place.
-  return dyop::detail::collide_polygons(InPlace(a), Placed(b, pose.b_in_a), q);
-}
-
 void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
                         const PairPose& pose) const {
   write_polygon_manifold(manifold, m, a, b, pose.b_in_a);
 }
 
 // A polygon and a circle.
-
-Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, const PairPose& pose,
-                                       ContactMemory&) const {
-  const b2Vec2 center = b2Mul(pose.b_in_a, b.m_p);
-  return dyop::detail::collide_polygon_circle(InPlace(a), Circle<float>{vec(center), b.m_radius},
-                                              q);
-}
 
 void PolygonCirclePair::write(b2Manifold* manifold, const Manifold<float>& m,
                               const PairPose& pose) const {

@@ -14,10 +14,13 @@
 #include <cstdint>
 
 #include "dyop/box2d.hpp"
+#include "detail/polygon_circle.hpp"
+#include "detail/polygon_pair.hpp"
 #include "dyop/convex_pair.hpp"
 #include "found_masks.hpp"
 #include "installation.hpp"
 #include "recycling.hpp"
+#include "shape_in_place.hpp"
 #include "stats.hpp"
 
 namespace dyop::box2d::detail {
@@ -203,7 +206,10 @@ struct PolygonPair : ExactPair {
                          ContactMemory& memory) {
     find_masks_of(contact, true, memory);
   }
-  Result<float> solve(const Setting&, const Query& q, const PairPose& pose, ContactMemory&) const;
+  // Inline (below): the solver's answer then stays in registers (measured: docs/measurements.md,
+  // "Everyday shapes").
+  inline Result<float> solve(const Setting&, const Query& q, const PairPose& pose,
+                             ContactMemory&) const;
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
   void box2d(b2Manifold* manifold) const { b2CollidePolygons(manifold, &a, xf_a, &b, xf_b); }
   static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
@@ -244,7 +250,10 @@ struct PolygonCirclePair : ExactPair {
                          ContactMemory& memory) {
     find_masks_of(contact, false, memory);
   }
-  Result<float> solve(const Setting&, const Query& q, const PairPose& pose, ContactMemory&) const;
+  // Inline (below): the solver's answer then stays in registers (measured: docs/measurements.md,
+  // "Everyday shapes").
+  inline Result<float> solve(const Setting&, const Query& q, const PairPose& pose,
+                             ContactMemory&) const;
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
   void box2d(b2Manifold* manifold) const {
     b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
@@ -258,5 +267,17 @@ struct PolygonCirclePair : ExactPair {
     count(to, setting, memory);
   }
 };
+
+inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
+                                        ContactMemory&) const {
+  return dyop::detail::collide_polygons(InPlace(a), Placed(b, pose.b_in_a), q);
+}
+
+inline Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, const PairPose& pose,
+                                              ContactMemory&) const {
+  const b2Vec2 center = b2Mul(pose.b_in_a, b.m_p);
+  return dyop::detail::collide_polygon_circle(InPlace(a),
+                                              Circle<float>{{center.x, center.y}, b.m_radius}, q);
+}
 
 }  // namespace dyop::box2d::detail
