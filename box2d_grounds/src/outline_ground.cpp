@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <memory>
 #include <utility>
@@ -106,12 +107,12 @@ OutlineResult refused(OutlineError e, int ring = -1) {
   return r;
 }
 
-// The triangles of `collection` (GEOS polygons of 3 distinct points each) as a vertex list, each
-// point once (the triangulation makes no point of its own: every vertex is an input point), and
-// indices.
+// The triangles of `collection` (GEOS polygons of 3 distinct points each) appended to a vertex
+// list, each point once (`index_of`: a point's index; the triangulation makes no point of its
+// own), and indices.
 void read_triangles(GEOSContextHandle_t ctx, const GEOSGeometry& collection,
-                    std::vector<b2Vec2>& vertices, std::vector<int>& indices) {
-  std::map<std::pair<float, float>, int> index_of;
+                    std::map<std::pair<float, float>, int>& index_of, std::vector<b2Vec2>& vertices,
+                    std::vector<int>& indices) {
   const int count = GEOSGetNumGeometries_r(ctx, &collection);
   for (int t = 0; t < count; ++t) {
     const GEOSGeometry* triangle = GEOSGetGeometryN_r(ctx, &collection, t);
@@ -128,6 +129,40 @@ void read_triangles(GEOSContextHandle_t ctx, const GEOSGeometry& collection,
       indices.push_back(at->second);
     }
   }
+}
+
+// The grid the points of a cell's piece are rounded to (metres). Why this: Box2D welds vertices
+// closer than `b2_linearSlop`, so distinct points on this grid make triangles it takes, and no
+// point moves by more than 3.6 mm.
+constexpr double cell_precision = b2_linearSlop;
+
+// The vertices of `polygon`'s rings lying on a side of the cells of side `side` (a coordinate a
+// multiple of it), as a multipoint, or nullptr for none. Why: where the outline touches a cell's
+// side at a vertex from one side only, that vertex is a vertex of the piece on that side alone
+// (a T-junction the rule cannot close) and can leave that piece touching itself.
+GEOSGeometry* vertices_on_cell_sides(GEOSContextHandle_t ctx, const GEOSGeometry& polygon,
+                                     double side) {
+  std::vector<GEOSGeometry*> points;
+  const auto add_ring = [&](const GEOSGeometry* ring) {
+    const GEOSCoordSequence* seq = GEOSGeom_getCoordSeq_r(ctx, ring);
+    unsigned size = 0;
+    GEOSCoordSeq_getSize_r(ctx, seq, &size);
+    for (unsigned i = 0; i + 1 < size; ++i) {  // a ring repeats its first point last
+      double x = 0;
+      double y = 0;
+      GEOSCoordSeq_getXY_r(ctx, seq, i, &x, &y);
+      if (std::fmod(x, side) == 0 || std::fmod(y, side) == 0) {
+        points.push_back(GEOSGeom_createPointFromXY_r(ctx, x, y));
+      }
+    }
+  };
+  add_ring(GEOSGetExteriorRing_r(ctx, &polygon));
+  for (int i = 0; i < GEOSGetNumInteriorRings_r(ctx, &polygon); ++i) {
+    add_ring(GEOSGetInteriorRingN_r(ctx, &polygon, i));
+  }
+  if (points.empty()) return nullptr;
+  return GEOSGeom_createCollection_r(ctx, GEOS_MULTIPOINT, points.data(),
+                                     static_cast<unsigned>(points.size()));
 }
 
 }  // namespace
@@ -203,12 +238,59 @@ OutlineResult add_outline(b2Body& body, const std::vector<std::vector<b2Vec2>>& 
                       : GEOSGeom_clone_r(ctx, polygon.get()),
                   destroy);
   if (!simple) return refused(OutlineError::Invalid);
-  const Geometry triangles(GEOSConstrainedDelaunayTriangulation_r(ctx, simple.get()), destroy);
-  if (!triangles) return refused(OutlineError::Invalid);
 
+  // The triangulation of each cell's piece (or of the whole polygon): pieces share the points
+  // where the outline crosses a cell's side and the cells' corners, computed the same way on both
+  // sides, so the triangles meet vertex to vertex.
+  std::map<std::pair<float, float>, int> index_of;
   std::vector<b2Vec2> vertices;
   std::vector<int> indices;
-  read_triangles(ctx, *triangles, vertices, indices);
+  // A piece clipped from a cell may hold lines and points where the outline only touches the
+  // cell's side: its polygons alone are triangulated.
+  const std::function<bool(const GEOSGeometry&)> triangulate = [&](const GEOSGeometry& piece) {
+    const int type = GEOSGeomTypeId_r(ctx, &piece);
+    if (type == GEOS_GEOMETRYCOLLECTION) {
+      for (int i = 0; i < GEOSGetNumGeometries_r(ctx, &piece); ++i) {
+        if (!triangulate(*GEOSGetGeometryN_r(ctx, &piece, i))) return false;
+      }
+      return true;
+    }
+    if ((type != GEOS_POLYGON && type != GEOS_MULTIPOLYGON) || GEOSisEmpty_r(ctx, &piece)) {
+      return true;
+    }
+    const Geometry triangles(GEOSConstrainedDelaunayTriangulation_r(ctx, &piece), destroy);
+    if (!triangles) return false;
+    read_triangles(ctx, *triangles, index_of, vertices, indices);
+    return true;
+  };
+  if (options.cell > 0) {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    if (!GEOSGeom_getExtent_r(ctx, simple.get(), &x0, &y0, &x1, &y1)) {
+      return refused(OutlineError::Invalid);
+    }
+    const double side = options.cell;
+    const Geometry on_sides(vertices_on_cell_sides(ctx, *simple, side), destroy);
+    // Within this of a piece's edge (metres), a vertex on a cell's side is put into that edge:
+    // far below any coordinate's rounding that matters (`b2_linearSlop` is 5e-3 m).
+    const double snap = 1e-9 * side;
+    for (double x = std::floor(x0 / side) * side; x < x1; x += side) {
+      for (double y = std::floor(y0 / side) * side; y < y1; y += side) {
+        Geometry piece(GEOSClipByRect_r(ctx, simple.get(), x, y, x + side, y + side), destroy);
+        if (piece && on_sides) piece.reset(GEOSSnap_r(ctx, piece.get(), on_sides.get(), snap));
+        // A piece touching itself at such a vertex is made valid (GEOS moves no point).
+        if (piece && GEOSisValid_r(ctx, piece.get()) != 1) {
+          piece.reset(GEOSMakeValid_r(ctx, piece.get()));
+        }
+        // Where the outline passes within millimetres of a cell's side or corner, the piece has
+        // slivers Box2D refuses: its points are rounded to `cell_precision`, the same points the
+        // same way in every piece, and what collapses goes.
+        if (piece) piece.reset(GEOSGeom_setPrecision_r(ctx, piece.get(), cell_precision, 0));
+        if (!piece || !triangulate(*piece)) return refused(OutlineError::Invalid);
+      }
+    }
+  } else if (!triangulate(*simple)) {
+    return refused(OutlineError::Invalid);
+  }
   OutlineResult r;
   r.vertices = static_cast<int>(vertices.size());
   r.mesh = add_triangles(body, vertices.data(), static_cast<int>(vertices.size()), indices.data(),

@@ -38,20 +38,30 @@ Ring shifted(Ring ring, const b2Vec2& by) {
   return ring;
 }
 
-int bits(std::uint8_t m) {
-  int n = 0;
-  for (; m; m &= static_cast<std::uint8_t>(m - 1)) ++n;
-  return n;
+double perimeter(const std::vector<Ring>& rings) {
+  double sum = 0;
+  for (const Ring& ring : rings) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      sum += (ring[(i + 1) % ring.size()] - ring[i]).Length();
+  }
+  return sum;
 }
 
+// How far a point of a cell's piece may move (metres): rounded to a 5 mm grid (`add_outline`).
+constexpr double kCellRounding = 0.5 * 1.4143 * b2_linearSlop;
+
 // The outline's triangles cover its area (the outline's less its holes'), each with fixed edge
-// data equal to what the rule finds; the edges not internal are the rings' edges (`ring_edges`,
-// counted by hand after the simplification).
-void expect_exact_ground(const OutlineResult& r, const std::vector<Ring>& rings, int ring_edges) {
+// data equal to what the rule finds; the edges not internal run along the rings (their lengths
+// sum to the rings' perimeter) and, for one triangulation of the whole outline (`ring_edges` ≥ 0),
+// are the rings' edges (counted by hand after the simplification). `moved`: how far a point may
+// have moved (0: not at all; `kCellRounding` in cells).
+void expect_exact_ground(const OutlineResult& r, const std::vector<Ring>& rings,
+                         int ring_edges = -1, double moved = kCellRounding) {
   ASSERT_TRUE(r.ok()) << r.message;
   double area = ring_area(rings[0]);
   for (std::size_t i = 1; i < rings.size(); ++i) area -= ring_area(rings[i]);
   double covered = 0;
+  double outer_length = 0;
   int outer_edges = 0;
   for (const b2Fixture* f : r.mesh.fixtures) {
     ASSERT_EQ(f->GetType(), b2Shape::e_polygon);
@@ -61,10 +71,25 @@ void expect_exact_ground(const OutlineResult& r, const std::vector<Ring>& rings,
     const std::optional<ShapeMasks> fixed = fixed_polygon_edges(*f);
     ASSERT_TRUE(fixed.has_value());
     EXPECT_EQ(*fixed, polygon_internal_edges(*f));
-    outer_edges += 3 - bits(fixed->edges);
+    for (int e = 0; e < 3; ++e) {
+      if ((fixed->edges >> e) & 1) continue;
+      ++outer_edges;
+      outer_length += (shape->m_vertices[(e + 1) % 3] - shape->m_vertices[e]).Length();
+    }
   }
-  EXPECT_NEAR(covered, area, 1e-5 * area);
-  EXPECT_EQ(outer_edges, ring_edges);
+  EXPECT_NEAR(covered, area, 1e-5 * area + moved * perimeter(rings));
+  EXPECT_NEAR(outer_length, perimeter(rings), 1e-4 * perimeter(rings) + 2 * moved * outer_edges);
+  if (ring_edges >= 0) {
+    EXPECT_EQ(outer_edges, ring_edges);
+  }
+}
+
+// One triangulation of the whole outline (no cells): its counts are worked by hand.
+OutlineOptions whole(float simplify = b2_linearSlop) {
+  OutlineOptions o;
+  o.simplify = simplify;
+  o.cell = 0;
+  return o;
 }
 
 TEST(OutlineGround, AnOutlineWithCavesIsCoveredExactlyWithEveryInnerEdgeInternal) {
@@ -74,10 +99,13 @@ TEST(OutlineGround, AnOutlineWithCavesIsCoveredExactlyWithEveryInnerEdgeInternal
       {{0, 0}, {20, 0}, {20, 4}, {14, 6}, {8, 4}, {0, 5}},  // clockwise or not: either winding
       rectangle(2, 1, 4, 2),
       {{10, 1}, {12, 3}, {9, 2.5f}}};
-  const OutlineResult r = add_outline(*ground, rings);
-  expect_exact_ground(r, rings, 6 + 4 + 3);
+  const OutlineResult r = add_outline(*ground, rings, whole());
+  expect_exact_ground(r, rings, 6 + 4 + 3, 0);
   EXPECT_EQ(r.vertices, 6 + 4 + 3);
   EXPECT_EQ(static_cast<int>(r.mesh.fixtures.size()), 6 + 4 + 3 + 2 * 2 - 2);  // V + 2H - 2
+  // In 2 m cells (the default), a hole's vertex on a cell's side among them.
+  b2Body* cells = add_body(world, b2_staticBody, b2Vec2(0, 30));
+  expect_exact_ground(add_outline(*cells, rings), rings);
 }
 
 TEST(OutlineGround, HostileOutlinesAreTriangulatedExactly) {
@@ -119,11 +147,13 @@ TEST(OutlineGround, HostileOutlinesAreTriangulatedExactly) {
     SCOPED_TRACE(c.name);
     World world;
     b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
-    OutlineOptions options;
-    options.simplify = c.simplify;
-    const OutlineResult r = add_outline(*ground, c.rings, options);
-    expect_exact_ground(r, c.rings, c.ring_edges);
+    const OutlineResult r = add_outline(*ground, c.rings, whole(c.simplify));
+    expect_exact_ground(r, c.rings, c.ring_edges, 0);
     EXPECT_EQ(r.vertices, c.vertices);
+    OutlineOptions in_cells;
+    in_cells.simplify = c.simplify;
+    b2Body* cells = add_body(world, b2_staticBody, b2Vec2(0, 0));
+    expect_exact_ground(add_outline(*cells, c.rings, in_cells), c.rings);
   }
 }
 

@@ -48,6 +48,11 @@ struct OutlineOptions {
   /// dropped before triangulating (metres; default `b2_linearSlop`, 0.005 m: Box2D welds vertices
   /// closer than that, and a straight run needs no vertex). 0 keeps every vertex.
   float simplify = b2_linearSlop;
+  /// The triangles are made within square cells of this side (metres; default 2; the cells'
+  /// sides at multiples of it in the body frame): each triangle's box stays within a cell, so a
+  /// body meets few triangles in the broad phase. 0: one triangulation of the whole outline, whose
+  /// triangles span its straight runs and depth.
+  float cell = 2;
   /// The fixtures are made like this (density, friction, filter...; `shape` is ignored).
   b2FixtureDef fixture;
 };
