@@ -1,6 +1,6 @@
 #pragma once
 // Internal: manifold recycling (`Config::recycle_distance`). A world's contact keeps the manifold
-// Box2D hands back to it while the relative pose of its two triangles has moved less than a
+// Box2D hands back to it while the relative pose of its two shapes has moved less than a
 // tolerance since the manifold was computed.
 //
 // Why keeping is sound in Box2D 2.4: `b2Manifold` is in the bodies' own frames, and the solver

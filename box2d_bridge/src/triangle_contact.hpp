@@ -1,5 +1,6 @@
 #pragma once
-// Internal: the plug-in's Box2D contact for polygon–polygon pairs.
+// Internal: the plug-in's Box2D contact for polygon–polygon and polygon–circle pairs (the name is
+// 0.1's, when it took triangle pairs alone).
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_contact.h>
