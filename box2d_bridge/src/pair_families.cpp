@@ -126,13 +126,9 @@ float bounding_radius(const b2PolygonShape& shape) {
 
 // Two triangles.
 
-bool TrianglePair::accepted(ContactMemory& memory) const {
-  if (memory.shapes == ContactMemory::Shapes::UnvalidatedTriangles) {
-    memory.shapes = valid_triangle(a) && valid_triangle(b)
-                        ? ContactMemory::Shapes::Triangles
-                        : ContactMemory::Shapes::InvalidTriangles;
-  }
-  return memory.shapes == ContactMemory::Shapes::Triangles;
+void TrianglePair::validate(ContactMemory& memory) const {
+  memory.shapes = valid_triangle(a) && valid_triangle(b) ? ContactMemory::Shapes::Triangles
+                                                         : ContactMemory::Shapes::InvalidTriangles;
 }
 
 void TrianglePair::find_masks(const TriangleContact& contact, const FoundMasks& masks,

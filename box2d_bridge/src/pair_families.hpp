@@ -117,8 +117,13 @@ struct TrianglePair {
   static bool solver_on(const Setting& setting) { return setting.method.has_value(); }
   // The internal-edge rule is in force under `setting` (the method honours the masks).
   static bool rule(const Setting& setting) { return setting.internal_edges; }
-  // The solver takes the shapes: validated at the first answer that asks.
-  bool accepted(ContactMemory& memory) const;
+  // The solver takes the shapes: validated at the first answer that asks (`validate`).
+  bool accepted(ContactMemory& memory) const {
+    if (memory.shapes == ContactMemory::Shapes::UnvalidatedTriangles) validate(memory);
+    return memory.shapes == ContactMemory::Shapes::Triangles;
+  }
+  // `Triangles` or `InvalidTriangles` into `memory`, as `Triangle<float>` takes both or not.
+  void validate(ContactMemory& memory) const;
   float face_separation(int face, const PairPose& pose) const {
     return detail::face_separation<3>(face, a, b, pose.b_in_a);
   }
