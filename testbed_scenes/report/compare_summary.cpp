@@ -88,6 +88,19 @@ std::vector<std::string> summary_lines(const Comparison& comparison) {
             kSummaryWallTimeScenes, f.wall_times, [](const WallTimeFigures& w) {
               return fmt("%.2f", w.narrowphase_ratio) + "x, " + fmt("%.2f", w.step_ratio) + "x";
             });
+  if (!f.grounds.empty()) {
+    lines.push_back(
+        "- Against Box2D's chains on the same level, chain -> builders: everyday bodies' largest "
+        "vertical speed; boxes started 0.4 m inside that end on top; a crowd's narrow phase and "
+        "step:");
+    for (const GroundFigures& g : f.grounds) {
+      lines.push_back("  - " + g.level + ": " + fmt("%.3f", g.chain_vertical_speed) + " -> " +
+                      fmt("%.3f", g.builders_vertical_speed) + " m/s; " +
+                      std::to_string(g.chain_on_top) + " -> " + std::to_string(g.builders_on_top) +
+                      " of " + std::to_string(g.boxes) + "; " + fmt("%.2f", g.narrowphase_ratio) +
+                      "x, " + fmt("%.2f", g.step_ratio) + "x");
+    }
+  }
   lines.push_back("- The report: " + dir +
                   "/report.md (every table below, and more); charts: " + dir + "/*.svg");
   if (f.viewer_pages) {

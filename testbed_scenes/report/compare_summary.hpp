@@ -29,6 +29,18 @@ struct WallTimeFigures {
   double step_ratio = 0;         ///< `b2World::Step`
 };
 
+/// One level built as Box2D's chain loops (Box2D's own contact) and by the plug-in's builders (the
+/// plug-in), from the grounds section.
+struct GroundFigures {
+  std::string level;  ///< e.g. "tile grid, 256 × 64 cells of 0.5 m"
+  /// Largest |v_y| (m/s) of the everyday bodies pushed along the top, each side.
+  double chain_vertical_speed = 0, builders_vertical_speed = 0;
+  /// Boxes started 0.4 m inside the ground that ended on top, each side, of `boxes`.
+  int chain_on_top = 0, builders_on_top = 0, boxes = 0;
+  double narrowphase_ratio = 0;  ///< a crowd's `b2Profile::collide`, builders over chain
+  double step_ratio = 0;         ///< the same for `b2World::Step`
+};
+
 /// The largest depth error of one runner over the main table's scenes, and where.
 struct DepthErrorFigures {
   double max_m = 0;   ///< largest `pd_error_max` (m)
@@ -43,6 +55,7 @@ struct SummaryFigures {
   std::optional<DepthErrorFigures> depth_dyop;  ///< the plug-in (`dyop`)
   std::vector<GlideFigures> glides;             ///< from the slide section
   std::vector<WallTimeFigures> wall_times;      ///< from the in-world section
+  std::vector<GroundFigures> grounds;           ///< from the grounds section
   bool viewer_pages = false;                    ///< the viewer section wrote its pages
 };
 

@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// Levels built two ways, for `dyop compare`'s grounds section: as Box2D's own remedy for ghost
+/// collisions, one-sided `b2ChainShape` loops under Box2D's own contact (the plug-in not
+/// installed), and through the plug-in's builders (`dyop::box2d::TileGround`,
+/// `dyop::box2d::add_outline`) under the plug-in (`Backend::Dyop`); the same bodies on each.
+///
+/// Units: metres, seconds, milliseconds for times; a level's figures per metre are per metre of
+/// its boundary (every loop's length).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <box2d/b2_math.h>
+
+#include "dyop/box2d.hpp"
+
+namespace dyop::experiments {
+
+/// The levels: a 60 m flat outline with a vertex every 0.25 m (what a tile editor exports); a
+/// 256 × 64 tile grid of 0.5 m cells with hills, caves and a dug pit; a 300 m outline with hills,
+/// ten caves and an overhang. Each has a flat stretch on top (x from 0 to `flat_length`, y = 0)
+/// where bodies glide and are placed.
+enum class GroundLevel : std::uint8_t { Flat, TileGrid, Outline };
+inline constexpr std::array<GroundLevel, 3> ground_levels = {
+    GroundLevel::Flat, GroundLevel::TileGrid, GroundLevel::Outline};
+const char* name(GroundLevel level);
+
+/// How a level is built: chain loops (Box2D's own contact) or the plug-in's builders.
+enum class GroundBuild : std::uint8_t { Chain, Builder };
+inline constexpr std::array<GroundBuild, 2> ground_builds = {GroundBuild::Chain,
+                                                             GroundBuild::Builder};
+const char* name(GroundBuild build);
+
+/// True when this build can make `level` with the builders: outlines need `dyop::box2d_outlines`
+/// (GEOS); the tile grid always can.
+bool builders_available(GroundLevel level);
+
+/// A tile grid's solid cells (`cells[row · columns + column]` nonzero) as the loops of a
+/// `b2ChainShape` each (`CreateLoop`), the solid on each loop's left (counter-clockwise around
+/// solid, clockwise around holes: Box2D's one-sided chains collide on the right), straight runs
+/// merged, cells meeting at a corner only kept apart. Cell (column, row) spans
+/// [origin.x + column·cell, + cell] × [origin.y + row·cell, + cell]; outside the grid is empty.
+std::vector<std::vector<b2Vec2>> tile_loops(const std::vector<std::uint8_t>& cells, int columns,
+                                            int rows, float cell, const b2Vec2& origin);
+
+/// A body pushed along the flat stretch: its largest vertical speed and how far it went.
+struct GroundGlide {
+  std::string body;               ///< e.g. "`SetAsBox` box"
+  double max_vertical_speed = 0;  ///< m/s, after the first step (a glide: 0)
+  double travel = 0;              ///< distance over push speed × time (a frictionless glide: 1)
+};
+
+/// Boxes started inside the ground or thrown at it: how many ended with their centre above the
+/// top.
+struct GroundPlacement {
+  std::string trial;  ///< e.g. "started 0.4 m inside"
+  int on_top = 0;     ///< boxes whose centre ended above the top
+  int boxes = 0;      ///< boxes in the trial
+};
+
+/// One level built one way, and what the same bodies did on it.
+struct GroundRun {
+  GroundLevel level = GroundLevel::Flat;
+  GroundBuild build = GroundBuild::Chain;
+  double boundary = 0;  ///< metres of boundary (every loop), the same both ways
+  int fixtures = 0;     ///< the ground's fixtures
+  int proxies = 0;      ///< the ground's broad-phase proxies (a chain: one per edge)
+  double bytes = 0;     ///< fixtures, shapes, chain vertices, proxies, tree nodes
+  double build_ms = 0;  ///< making the ground's fixtures, median over every world built
+  double refresh_ms =
+      0;  ///< a cell dug (tile grid: its chunk, or every loop again) or the level again
+  std::vector<GroundGlide> glides;
+  std::vector<GroundPlacement> placements;
+  double narrow_ms = 0;  ///< the crowd's `b2Profile::collide`, summed over its steps (median)
+  double step_ms = 0;    ///< the crowd's `b2Profile::step`, summed over its steps (median)
+};
+
+/// How much the crowd runs: bodies, steps, and runs alternating between chain and builders.
+struct GroundTiming {
+  int bodies = 0;
+  int steps = 0;
+  int runs = 0;
+};
+
+/// The crowd on `level`: `quick` for the main command's figures (a couple of seconds per level);
+/// `steps`, when given, replaces the step count (`dyop compare --steps`).
+GroundTiming ground_timing(GroundLevel level, bool quick, std::optional<int> steps = std::nullopt);
+
+/// `level` built both ways (chain first): per way, one world for the glides (every body alone on
+/// the ground), one for the placements (then a refresh), one per crowd run; the crowd's runs
+/// alternate between the two. The plug-in is installed with `config` for the builders' side and
+/// uninstalled for the chain's, and uninstalled at the end. Throws `std::runtime_error` when the
+/// builders refuse the level or this build has none for it (`builders_available`).
+std::array<GroundRun, 2> compare_ground(GroundLevel level, const GroundTiming& timing,
+                                        const box2d::Config& config);
+
+}  // namespace dyop::experiments

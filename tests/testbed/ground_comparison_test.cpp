@@ -1,0 +1,129 @@
+// The grounds section's levels: a tile grid's cells traced into chain loops that enclose exactly
+// its solid cells, and the same level built as chains and by the builders, side by side.
+#include <box2d/box2d.h>
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "experiments/ground_comparison.hpp"
+
+namespace dyop::experiments {
+namespace {
+
+using Cells = std::vector<std::uint8_t>;
+
+struct Grid {
+  std::string name;
+  int columns, rows;
+  Cells cells;
+};
+
+// Hostile grids: a single cell, a checkerboard (cells meeting only by their corners), full and
+// empty maps, a ring around a hole, and a random map.
+std::vector<Grid> hostile_grids() {
+  std::vector<Grid> grids;
+  grids.push_back({"single cell", 1, 1, {1}});
+  Cells checker(7 * 5);
+  for (int r = 0; r < 5; ++r) {
+    for (int c = 0; c < 7; ++c) checker[static_cast<std::size_t>(r * 7 + c)] = (r + c) % 2 == 0;
+  }
+  grids.push_back({"checkerboard", 7, 5, checker});
+  grids.push_back({"full", 9, 4, Cells(36, 1)});
+  grids.push_back({"empty", 6, 6, Cells(36, 0)});
+  Cells ring(5 * 5, 1);
+  ring[12] = 0;
+  grids.push_back({"ring around a hole", 5, 5, ring});
+  std::mt19937 rng(7);
+  Cells random(40 * 20);
+  for (auto& cell : random) cell = rng() % 10 < 4;
+  grids.push_back({"random", 40, 20, random});
+  return grids;
+}
+
+double signed_area(const std::vector<b2Vec2>& loop) {
+  double a = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const b2Vec2& p = loop[i];
+    const b2Vec2& q = loop[(i + 1) % loop.size()];
+    a += static_cast<double>(p.x) * q.y - static_cast<double>(q.x) * p.y;
+  }
+  return a / 2;
+}
+
+TEST(TileLoops, EncloseExactlyTheSolidCellsWithTheSolidOnTheLeft) {
+  const float cell = 0.5f;
+  const b2Vec2 origin(-3, 2);
+  for (const Grid& g : hostile_grids()) {
+    SCOPED_TRACE(g.name);
+    const auto loops = tile_loops(g.cells, g.columns, g.rows, cell, origin);
+    double area = 0;
+    std::size_t solid = 0;
+    for (const std::uint8_t c : g.cells) solid += c != 0;
+    for (const auto& loop : loops) {
+      ASSERT_GE(loop.size(), 4u) << "a loop of cells has at least four corners";
+      area += signed_area(loop);
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const b2Vec2 a = loop[i];
+        const b2Vec2 b = loop[(i + 1) % loop.size()];
+        const b2Vec2 c = loop[(i + 2) % loop.size()];
+        EXPECT_GT(b2Distance(a, b), b2_linearSlop) << "consecutive corners apart, as a chain needs";
+        EXPECT_TRUE(a.x == b.x || a.y == b.y) << "edges along the grid";
+        EXPECT_NE(b2Cross(b - a, c - b), 0.0f) << "straight runs merged";
+      }
+      // Box2D takes it as a loop.
+      b2ChainShape chain;
+      chain.CreateLoop(loop.data(), static_cast<int>(loop.size()));
+      EXPECT_EQ(chain.GetChildCount(), static_cast<int>(loop.size()));
+    }
+    // Counter-clockwise around solid, clockwise around holes: the areas add up to the solid's.
+    EXPECT_NEAR(area, static_cast<double>(solid) * cell * cell, 1e-6);
+    if (g.name == "checkerboard") {
+      EXPECT_EQ(loops.size(), solid) << "cells meeting by a corner stay apart";
+    }
+    if (g.name == "ring around a hole") {
+      ASSERT_EQ(loops.size(), 2u);
+      EXPECT_LT(std::min(signed_area(loops[0]), signed_area(loops[1])), 0) << "the hole's loop";
+    }
+    if (g.name == "empty") {
+      EXPECT_TRUE(loops.empty());
+    }
+  }
+}
+
+TEST(TileLoops, RefuseCellsThatAreNotColumnsTimesRowsLong) {
+  EXPECT_THROW(tile_loops(Cells(5, 1), 2, 3, 1, b2Vec2(0, 0)), std::invalid_argument);
+  EXPECT_THROW(tile_loops(Cells(), 0, 0, 1, b2Vec2(0, 0)), std::invalid_argument);
+}
+
+// The tile grid (256 × 64 cells) both ways, a short crowd: the builders' ground lets every
+// everyday body glide and pushes boxes started under its top back out; the chain, one-sided, lets
+// those boxes through. Both grounds have the same boundary.
+TEST(Grounds, TheBuildersGroundGlidesAndPushesOutWhatTheChainLetsThrough) {
+  const GroundTiming timing{20, 5, 1};
+  const auto runs = compare_ground(GroundLevel::TileGrid, timing, box2d::Config{});
+  const GroundRun& chain = runs[0];
+  const GroundRun& builders = runs[1];
+  EXPECT_EQ(chain.build, GroundBuild::Chain);
+  EXPECT_EQ(builders.build, GroundBuild::Builder);
+  EXPECT_DOUBLE_EQ(chain.boundary, builders.boundary);
+  EXPECT_GT(builders.fixtures, 0);
+  ASSERT_EQ(builders.glides.size(), 4u);
+  for (const GroundGlide& g : builders.glides) {
+    EXPECT_LE(g.max_vertical_speed, 0.05) << g.body;
+    EXPECT_GE(g.travel, 0.98) << g.body;
+  }
+  ASSERT_EQ(chain.placements.size(), builders.placements.size());
+  for (std::size_t k = 0; k < builders.placements.size(); ++k) {
+    const GroundPlacement& p = builders.placements[k];
+    EXPECT_EQ(p.on_top, p.boxes) << p.trial;
+    if (p.trial.find("0.4 m inside") != std::string::npos) {
+      EXPECT_EQ(chain.placements[k].on_top, 0) << "a one-sided chain lets them through";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace dyop::experiments
