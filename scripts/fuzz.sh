@@ -48,7 +48,9 @@ if [ -n "${FUZZ_TARGETS:-}" ]; then
 else
   binaries=(fuzz_csv fuzz_method fuzz_convex fuzz_world)
 fi
-cmake -S . -B build-fuzz -DDYOP_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
+source scripts/generator.sh
+dyop_fresh_tree build-fuzz
+cmake -S . -B build-fuzz "${dyop_generator[@]}" -DDYOP_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ \
       -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDYOP_BUILD_TESTS=OFF -DDYOP_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${binaries[@]}"
 echo "fuzz: built ${binaries[*]} in $((SECONDS - start)) s" >&2

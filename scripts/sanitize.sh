@@ -13,7 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
 sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+source scripts/generator.sh
+dyop_fresh_tree build-asan
+cmake -S . -B build-asan "${dyop_generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS="$sanitizers -fno-omit-frame-pointer" \
       -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" -DCMAKE_SHARED_LINKER_FLAGS="$sanitizers" \
       -DDYOP_BUILD_BENCH=OFF >/dev/null

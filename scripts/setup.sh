@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
+packages=(cmake g++ make ninja-build pkg-config libeigen3-dev libbox2d-dev libgtest-dev libbenchmark-dev
           libcli11-dev libgmp-dev nlohmann-json3-dev zlib1g-dev gnuplot-nox
           libgeos-dev                # for dyop::box2d_outlines (grounds from outlines)
           clang libclang-rt-14-dev   # for scripts/fuzz.sh (libFuzzer)
@@ -33,13 +33,15 @@ fi
 # DYOP_PACKAGES_ONLY=1: the packages only, no build (scripts/api_docs.sh run on its own).
 if [ "${DYOP_PACKAGES_ONLY:-0}" = 1 ]; then exit 0; fi
 
+source scripts/generator.sh
 mkdir -p build
+dyop_fresh_tree build
 log=build/build.log
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 echo "setup: configuring and building ${*:-everything} (Release; log: $log)" >&2
 start=$SECONDS
-if ! { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release &&
+if ! { cmake -S . -B build "${dyop_generator[@]}" -DCMAKE_BUILD_TYPE=Release &&
        cmake --build build -j"$(nproc)" "${targets[@]}"; } > "$log" 2>&1 < /dev/null; then
   echo "setup: the build failed; the end of $log:" >&2
   tail -n 40 "$log" >&2
@@ -49,7 +51,9 @@ build_pid=$!
 # Progress: the build's percentage, each time it passes another tenth.
 shown=-10
 while kill -0 "$build_pid" 2>/dev/null; do
-  pct=$(grep -o '^\[ *[0-9]*%\]' "$log" 2>/dev/null | tail -n 1 | tr -dc '0-9' || true)
+  # Make prints "[ 42%]", Ninja "[17/40]".
+  pct=$(grep -oE '^\[ *[0-9]+%\]|^\[[0-9]+/[0-9]+\]' "$log" 2>/dev/null | tail -n 1 |
+        awk -F'[][/%]' '{ print ($3 == "" ? $2 + 0 : int(100 * $2 / $3)) }' || true)
   if [ -n "$pct" ] && [ "$pct" -ge $((shown + 10)) ]; then
     shown=$pct
     echo "setup: build ${pct}% ($((SECONDS - start)) s)" >&2

@@ -10,7 +10,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
 sanitizers="-fsanitize=thread"
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+source scripts/generator.sh
+dyop_fresh_tree build-tsan
+cmake -S . -B build-tsan "${dyop_generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS="$sanitizers" -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" \
       -DCMAKE_SHARED_LINKER_FLAGS="$sanitizers" -DDYOP_BUILD_BENCH=OFF >/dev/null
 cmake --build build-tsan -j"$(nproc)" --target box2d_bridge_tests
