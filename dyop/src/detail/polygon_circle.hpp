@@ -17,6 +17,15 @@ namespace dyop::detail {
 template <class T>
 using Local = std::array<Vec2<T>, max_polygon_vertices>;
 
+// A polygon's vertices in the frame centred on its vertex 0, each placed when read (most are read
+// once or twice: no copy of them all).
+template <class T, class P>
+struct Shifted {
+  const P& p;
+  Vec2<T> origin;
+  Vec2<T> operator[](int i) const { return p.vertex(i) - origin; }
+};
+
 // The point of segment p→q nearest x, and which feature of the segment holds it.
 template <class T>
 Vec2<T> nearest_on_segment(const Vec2<T>& p, const Vec2<T>& q, const Vec2<T>& x,
@@ -55,7 +64,7 @@ struct CenterPlace {
 // faces would lie farther, its normal being nearer the direction from the vertex to the centre),
 // so that face alone is searched, as `b2CollidePolygonAndCircle` does.
 template <class T, class P>
-[[gnu::always_inline]] inline CenterPlace<T> place_center(const P& p, const Local<T>& v,
+[[gnu::always_inline]] inline CenterPlace<T> place_center(const P& p, const Shifted<T, P>& v,
                                                           const Vec2<T>& c) {
   CenterPlace<T> out;
   T farthest = p.normal(0).dot(c - v[0]);
@@ -93,7 +102,7 @@ template <class T, class P>
 
 // The distance from `c` to the polygon's edge `e` as a segment (local frame).
 template <class T, class P>
-T segment_distance(const P& p, const Local<T>& v, int e, const Vec2<T>& c) {
+T segment_distance(const P& p, const Shifted<T, P>& v, int e, const Vec2<T>& c) {
   Feature::Type type;
   int end;
   return (c - nearest_on_segment(v[e], v[p.next(e)], c, type, end)).norm();
@@ -107,8 +116,7 @@ template <class T, class P>
 [[gnu::always_inline]] inline Result<T> collide_polygon_circle(const P& pa, const Circle<T>& circle,
                                                                const ConvexQuery<T>& q) {
   const Vec2<T> origin = pa.vertex(0);
-  Local<T> v;
-  for (int i = 0; i < pa.count(); ++i) v[i] = pa.vertex(i) - origin;
+  const Shifted<T, P> v{pa, origin};
   const Vec2<T> c = circle.center - origin;
   const T radius = circle.radius;
   const T band = touching_tolerance<T>() * std::max(pa.size(), radius);
