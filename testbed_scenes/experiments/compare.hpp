@@ -4,7 +4,8 @@
 /// (`program/compare_command.hpp`): every scene under every backend, for one table with the scene
 /// figures and each backend's narrow-phase time as a ratio to `box2d`'s in the same run, and the
 /// experiments of its sections: what skipping saves (`skip_scenes` with every skip off and on),
-/// in-world timing, the paper's Figure-7 experiment and the `slide` scene side by side
+/// in-world timing, the paper's Figure-7 experiment, the `slide` scene side by side and levels
+/// built as Box2D's chains and by the plug-in's builders
 /// (`report/compare_section.hpp` runs and writes each section; `report/compare_report.hpp`
 /// writes the report directory).
 
