@@ -12,6 +12,7 @@
 #include "dyop/box2d_grid.hpp"
 #include "scenes/installation.hpp"
 #include "scenes/metrics.hpp"
+#include "worlds/world.hpp"
 #ifdef DYOP_WITH_OUTLINES
 #include "dyop/box2d_outline.hpp"
 #endif
@@ -21,7 +22,6 @@ namespace {
 
 using Ring = std::vector<b2Vec2>;
 
-constexpr float kDt = 1.0f / 60;
 constexpr float kPush = 4;        // m/s, the glides' push
 constexpr int kGlideSteps = 240;  // 4 s: 16 m at kPush, within every level's flat stretch
 constexpr int kPlacementSteps = 180;
@@ -130,8 +130,7 @@ class Built {
  public:
   Built(GroundLevel level, GroundBuild build) : level_(level), build_(build) {
     if (level == GroundLevel::TileGrid) cells_ = tile_cells();  // the game's map, not timed
-    b2BodyDef def;
-    ground_ = world.CreateBody(&def);
+    ground_ = worlds::add_body(world, b2_staticBody, b2Vec2(0, 0));
     const auto start = std::chrono::steady_clock::now();
     make();
     build_ms = elapsed_ms(start);
@@ -156,7 +155,7 @@ class Built {
     return elapsed_ms(start);
   }
 
-  b2World world{b2Vec2(0, -10)};
+  worlds::World world;  // the testbed's: sleeping off, its step and iterations
   double build_ms = 0;
   double boundary = 0;
   int proxies = 0;
@@ -243,27 +242,16 @@ struct Shapes {
   }
 };
 
-b2Body* add_body(b2World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
-  b2BodyDef def;
-  def.type = b2_dynamicBody;
-  def.position = at;
-  b2Body* body = world.CreateBody(&def);
+// A dynamic body at `at` with one fixture of `shape` (density 1), or, for nullptr, a box of two
+// triangle fixtures of half-size 0.3 m.
+b2Body* add_dynamic(worlds::World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
+  if (!shape) return worlds::add_split_box(world, at, 0.3f, worlds::Material{1, friction});
+  b2Body* body = worlds::add_body(world, b2_dynamicBody, at);
   b2FixtureDef fixture;
+  fixture.shape = shape;
   fixture.density = 1;
   fixture.friction = friction;
-  if (shape) {
-    fixture.shape = shape;
-    body->CreateFixture(&fixture);
-    return body;
-  }
-  const b2Vec2 corners[4] = {{-0.3f, -0.3f}, {0.3f, -0.3f}, {0.3f, 0.3f}, {-0.3f, 0.3f}};
-  for (const auto& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
-    b2PolygonShape triangle;
-    const b2Vec2 v[3] = {corners[t[0]], corners[t[1]], corners[t[2]]};
-    triangle.Set(v, 3);
-    fixture.shape = &triangle;
-    body->CreateFixture(&fixture);
-  }
+  body->CreateFixture(&fixture);
   return body;
 }
 
@@ -279,8 +267,8 @@ float resting_height(const b2Shape* shape) {
 // alone, as in a world of its own.
 constexpr int16 kApart = -1;
 
-b2Body* add_apart(b2World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
-  b2Body* body = add_body(world, shape, at, friction);
+b2Body* add_apart(worlds::World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
+  b2Body* body = add_dynamic(world, shape, at, friction);
   for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
     b2Filter filter = f->GetFilterData();
     filter.groupIndex = kApart;
@@ -298,7 +286,7 @@ std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
   }
   std::vector<double> vertical(bodies.size(), 0);
   for (int i = 0; i < kGlideSteps; ++i) {
-    built.world.Step(kDt, 8, 3);
+    built.world.step();
     for (std::size_t k = 0; k < bodies.size() && i > 0; ++k) {
       vertical[k] = std::max(vertical[k], std::abs(double{bodies[k]->GetLinearVelocity().y}));
     }
@@ -306,7 +294,7 @@ std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
   std::vector<GroundGlide> out;
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     out.push_back({shapes.all()[k].first, vertical[k],
-                   (bodies[k]->GetPosition().x - 2) / (kPush * kGlideSteps * kDt)});
+                   (bodies[k]->GetPosition().x - 2) / (kPush * kGlideSteps * worlds::time_step)});
   }
   return out;
 }
@@ -333,7 +321,7 @@ std::vector<GroundPlacement> placements(Built& built, const Shapes& shapes) {
       boxes.back().push_back(b);
     }
   }
-  for (int i = 0; i < kPlacementSteps; ++i) built.world.Step(kDt, 8, 3);
+  for (int i = 0; i < kPlacementSteps; ++i) built.world.step();
   std::vector<GroundPlacement> out;
   for (std::size_t k = 0; k < boxes.size(); ++k) {
     const int on_top = static_cast<int>(std::count_if(
@@ -363,16 +351,16 @@ std::pair<double, double> crowd(Built& built, GroundLevel level, const GroundTim
   const auto all = shapes.all();
   const int per_row = static_cast<int>((length - 2) / 0.85f);
   for (int k = 0; k < timing.bodies; ++k) {
-    add_body(built.world, all[static_cast<std::size_t>(k) % all.size()].second,
-             {1 + 0.85f * static_cast<float>(k % per_row),
-              height + 0.9f * static_cast<float>(k / per_row)},
-             0.6f);
+    add_dynamic(built.world, all[static_cast<std::size_t>(k) % all.size()].second,
+                {1 + 0.85f * static_cast<float>(k % per_row),
+                 height + 0.9f * static_cast<float>(k / per_row)},
+                0.6f);
   }
   double collide = 0, step = 0;
   for (int i = 0; i < timing.steps; ++i) {
-    built.world.Step(kDt, 8, 3);
-    collide += built.world.GetProfile().collide;
-    step += built.world.GetProfile().step;
+    built.world.step();
+    collide += built.world->GetProfile().collide;
+    step += built.world->GetProfile().step;
   }
   return {collide, step};
 }
