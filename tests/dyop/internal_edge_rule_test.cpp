@@ -97,6 +97,32 @@ TYPED_TEST(InternalEdgeMasks, VertexOfBAgainstAFlatJunction) {
   });
 }
 
+// B's bottom (0.9, -0.01)–(1.4, -0.01) lies flat on A's top across A's closed vertex (1, 0), as
+// the bottom of a body of several triangles on a flat ground: B's vertex 0 is closed (the middle
+// of its body's bottom), its diagonal internal. Along A's top both of B's bottom vertices are the
+// deepest, and the first is closed: the flat outline edge between them keeps the axis (before, no
+// axis was usable and the pair lost its support: no manifold points). With B's bottom internal as
+// well, nothing keeps it.
+TYPED_TEST(InternalEdgeMasks, OutlineEdgeLyingFlatAtAClosedVertexKeepsItsAxis) {
+  using T = TypeParam;
+  const auto a = ground<T>();
+  const auto b = tri<T>(T(0.9), T(-0.01), T(1.4), T(-0.01), T(1.4), T(0.5));
+  const std::uint8_t b_diagonal = 1 << (3 + 2);
+  const std::uint8_t b_bottom = 1 << 3;
+  const std::uint8_t b_vertex0 = 1 << 3;
+  for_exact_methods<T>([&](Method m) {
+    const Result<T> r = penetrate(
+        m, a, b, query<T>(Level::Manifold, ground_edges | b_diagonal, ground_vertices | b_vertex0));
+    expect_up(r, T(0.01));
+    EXPECT_EQ(r.manifold.point_count, 2);
+    const Result<T> inside =
+        penetrate(m, a, b,
+                  query<T>(Level::Manifold, ground_edges | b_diagonal | b_bottom,
+                           ground_vertices | b_vertex0));
+    EXPECT_EQ(inside.manifold.point_count, 0) << "an internal bottom keeps nothing";
+  });
+}
+
 // B = (0.5,-0.6) (1.5,-0.6) (1,0.5) straddles the internal edge x = 1, 0.6 deep. Unrestricted:
 // 0.5 along -x (the internal edge). B's faces: its bottom reaches A's flat vertex (1,0); its
 // sides give 0.621 and 1.117. Allowed least: the top, 0.6.
@@ -339,7 +365,8 @@ TEST(InternalEdgesRule, TheKernelLetsAnswerTheAxesTheRuleNames) {
 }
 
 // The float kernel in SSE registers against the generic one, bit for bit, over reaches from 0
-// to past the pair's size (where every bit flips at least once).
+// to past the pair's size (where every bit flips at least once), every closed-vertex and
+// internal-edge mask of the other triangle.
 TEST(InternalEdgesRule, TheVectorKernelGivesTheGenericKernelsBits) {
   int compared = 0;
   for (InputClass c : test_classes) {
@@ -350,15 +377,17 @@ TEST(InternalEdgesRule, TheVectorKernelGivesTheGenericKernelsBits) {
       for (float reach : {0.0f, 1e-3f, 0.05f, 0.3f, 1.0f, 4.0f}) {
         reach *= float(pair_size(p));
         for (unsigned internal = 0; internal < 8; ++internal) {
-          for (unsigned closed = 0; closed < 8; closed += 3) {
-            const detail::EdgeBits generic =
-                detail::edge_bits<float>(frame.ta, frame.a, frame.b, internal, closed, reach);
-            const detail::EdgeBits vector =
-                detail::edge_bits(frame.ta, frame.a, frame.b, internal, closed, reach);
-            ASSERT_EQ(vector.allowed, generic.allowed);
-            ASSERT_EQ(vector.wholly_inside, generic.wholly_inside);
-            ASSERT_EQ(vector.cut_other, generic.cut_other);
-            ++compared;
+          for (unsigned closed = 0; closed < 8; ++closed) {
+            for (unsigned other_internal = 0; other_internal < 8; other_internal += 3) {
+              const detail::EdgeBits generic = detail::edge_bits<float>(
+                  frame.ta, frame.a, frame.b, internal, closed, other_internal, reach);
+              const detail::EdgeBits vector = detail::edge_bits(
+                  frame.ta, frame.a, frame.b, internal, closed, other_internal, reach);
+              ASSERT_EQ(vector.allowed, generic.allowed);
+              ASSERT_EQ(vector.wholly_inside, generic.wholly_inside);
+              ASSERT_EQ(vector.cut_other, generic.cut_other);
+              ++compared;
+            }
           }
         }
       }

@@ -80,11 +80,6 @@ TEST(Tiles, BoxTripsOnTilesAndTJunctionsUnderBox2DsOwnContact) {
   }
 }
 
-// m/s: an L of the tile map's crowd is thrown up at 0.089 m/s by some launch points, the figure
-// the L reaches at the junction in the middle of its own bottom (see tiles.cpp, kLaunchOffset);
-// Box2D's own contact throws the crowd up at 1.4 m/s.
-constexpr double kCrowdLVerticalSpeed = 0.1;
-
 // The tile map's crowd: every box and L on every lane glides over its tiles as bodies, each
 // contact running the rule at every step (too fast to be kept), with debris falling beside them.
 TEST(TileMap, EverySliderOfTheCrowdGlides) {
@@ -94,7 +89,7 @@ TEST(TileMap, EverySliderOfTheCrowdGlides) {
   EXPECT_EQ(m.slide->sliders.size(), 48u);
   for (const SliderFigures& s : m.slide->sliders) {
     SCOPED_TRACE(s.body + " on " + s.ground);
-    EXPECT_LE(s.max_vertical_speed, s.body == "box" ? kGlideVerticalSpeed : kCrowdLVerticalSpeed);
+    EXPECT_LE(s.max_vertical_speed, kGlideVerticalSpeed);
     EXPECT_GE(s.travel, kGlideTravel);
   }
   EXPECT_EQ(m.fallbacks, 0u);

@@ -3,9 +3,10 @@
 // caller marks edges internal or vertices closed (`Query::internal_edges`).
 //
 // Axis k is an edge normal of one triangle, realised at the other triangle's deepest vertex
-// along it (first on ties, as `overlap_on_axis` picks it). It is allowed when its edge is not
-// internal and its deepest vertex is not a closed vertex of the other body (there the outline's
-// directions are other axes, of its own triangle's or of its neighbours' pairs). It is usable
+// along it. It is allowed when its edge is not internal and it is not realised inside the other
+// body: at a closed vertex of the other triangle (there the outline's directions are other axes,
+// of its own triangle's or of its neighbours' pairs) with no outline edge of it lying flat on the
+// axis's face (`realised_inside`). It is usable
 // when, besides, the other triangle reaches the edge: a push along an edge's normal is a push
 // back out through that edge.
 //
@@ -48,21 +49,6 @@ struct AllowedAxes {
   }
 };
 
-// True when axis k of `f` is allowed by `q`'s masks (caller's order, see `Query`).
-// The deep vertex is looked for only when the other triangle has closed vertices at all.
-template <class T>
-bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
-  const bool own_is_a = k < 3;
-  const int edge_bit = own_is_a ? f.ta.input_edge(k) : 3 + f.tb.input_edge(k - 3);
-  if ((q.internal_edges.edges >> edge_bit) & 1) return false;
-  const int other_closed =
-      own_is_a ? q.internal_edges.closed_vertices >> 3 : q.internal_edges.closed_vertices & 7;
-  if (other_closed == 0) return true;
-  const int deep = overlap_on_axis(f, k).deep;
-  const int vertex = own_is_a ? f.tb.input_vertex(deep) : f.ta.input_vertex(deep);
-  return ((other_closed >> vertex) & 1) == 0;
-}
-
 // Bits 0..2 of `bits` (a triangle's flags by the caller's edge or vertex index) in CCW order:
 // bit i is the caller's flag of CCW edge or vertex i (`input_edge`, `input_vertex`; a clockwise
 // input swaps edges 0 and 2, vertices 1 and 2). Looked up, not shifted bit by bit.
@@ -77,6 +63,27 @@ unsigned ccw_vertex_bits(const Triangle<T>& t, unsigned bits) {
   return kCcw[t.flipped()][bits & 7u];
 }
 
+// True when axis k of `f` is allowed by `q`'s masks (caller's order, see `Query`).
+// The deep vertices are looked for only when the other triangle has closed vertices at all.
+template <class T>
+bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
+  const bool own_is_a = k < 3;
+  const int edge_bit = own_is_a ? f.ta.input_edge(k) : 3 + f.tb.input_edge(k - 3);
+  if ((q.internal_edges.edges >> edge_bit) & 1) return false;
+  const int other_closed =
+      own_is_a ? q.internal_edges.closed_vertices >> 3 : q.internal_edges.closed_vertices & 7;
+  if (other_closed == 0) return true;
+  const unsigned other_internal =
+      own_is_a ? (q.internal_edges.edges >> 3) & 7u : q.internal_edges.edges & 7u;
+  const Triangle<T>& other = own_is_a ? f.tb : f.ta;
+  const std::array<Vec2<T>, 3>& other_v = own_is_a ? f.b : f.a;
+  const Vec2<T>& n = own_is_a ? f.ta.normal(k) : f.tb.normal(k - 3);
+  const T d[3] = {n.dot(other_v[0]), n.dot(other_v[1]), n.dot(other_v[2])};
+  return !realised_inside(d, other_v.data(), 3,
+                          ccw_vertex_bits(other, static_cast<unsigned>(other_closed)),
+                          ccw_edge_bits(other, other_internal));
+}
+
 // What one triangle's three edges say to the rule (bits 0..2, CCW).
 struct EdgeBits {
   unsigned allowed = 0;        // edges the masks allow (`axis_allowed`)
@@ -88,23 +95,22 @@ struct EdgeBits {
 // triangle's local vertices `other`: for edge e (outward normal n) and the other's vertex w,
 // n·v_w − n·p_e is its signed distance from the edge's line, from the products `all_overlaps` and
 // `overlap_on_axis` take; beyond ±`reach` it counts as outside or inside. `internal`: own edges
-// marked internal; `other_closed`: the other's closed vertices (both CCW bits); an axis is
-// refused when its edge is internal or its deep vertex (first on ties, as `overlap_on_axis`) is
-// closed.
+// marked internal; `other_closed` and `other_internal`: the other's closed vertices and internal
+// edges (all CCW bits); an axis is refused when its edge is internal or it is realised inside the
+// other body (`realised_inside`).
 template <class T>
 EdgeBits edge_bits(const Triangle<T>& own, const std::array<Vec2<T>, 3>& own_v,
                    const std::array<Vec2<T>, 3>& other, unsigned internal, unsigned other_closed,
-                   T reach) {
+                   unsigned other_internal, T reach) {
   EdgeBits out;
   unsigned beyond[3] = {0, 0, 0};  // bits e: the other's vertex w beyond edge e's line
   for (int e = 0; e < 3; ++e) {
     const Vec2<T>& n = own.normal(e);
     const T line = n.dot(own_v[e]);
     const T d[3] = {n.dot(other[0]), n.dot(other[1]), n.dot(other[2])};
-    T least;
-    int deep;
-    min3(d[0], d[1], d[2], least, deep);
-    const unsigned refused = ((internal >> e) & 1u) | ((other_closed >> deep) & 1u);
+    const unsigned refused =
+        ((internal >> e) & 1u) |
+        static_cast<unsigned>(realised_inside(d, other.data(), 3, other_closed, other_internal));
     out.allowed |= (refused ^ 1u) << e;
     unsigned inside = 0;
     for (int w = 0; w < 3; ++w) {
@@ -124,7 +130,7 @@ EdgeBits edge_bits(const Triangle<T>& own, const std::array<Vec2<T>, 3>& own_v,
 // differences and comparisons, so the same bits (tested against the generic one).
 inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<float>, 3>& own_v,
                           const std::array<Vec2<float>, 3>& other, unsigned internal,
-                          unsigned other_closed, float reach) {
+                          unsigned other_closed, unsigned other_internal, float reach) {
   const __m128 nx = _mm_setr_ps(own.normal(0).x(), own.normal(1).x(), own.normal(2).x(), 0.0f);
   const __m128 ny = _mm_setr_ps(own.normal(0).y(), own.normal(1).y(), own.normal(2).y(), 0.0f);
   const __m128 px = _mm_setr_ps(own_v[0].x(), own_v[1].x(), own_v[2].x(), 0.0f);
@@ -135,15 +141,39 @@ inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<floa
     d[w] = _mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(other[w].x())),
                       _mm_mul_ps(ny, _mm_set1_ps(other[w].y())));
   }
-  // The deep vertex as `min3`: d1 < d0 picks 1, then d2 below the lesser picks 2.
+  // As `realised_inside`, an own edge per lane: the deep vertex as `realised_inside` picks it
+  // (d1 < d0 picks 1, then d2 below the lesser picks 2); a closed one refuses the lane unless an
+  // outline edge of the other at it lies flat (`flat[j]`: the lanes where edge j does, seen from
+  // either end: the same rise and bound as `realised_inside` computes).
   const unsigned one = static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[1], d[0]))) & 7u;
   const unsigned two =
       static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[2], _mm_min_ps(d[1], d[0])))) & 7u;
   const unsigned deep_at[3] = {~(one | two) & 7u, one & ~two, two};
-  unsigned closed_hit = 0;
-  for (int w = 0; w < 3; ++w) closed_hit |= deep_at[w] & (0u - ((other_closed >> w) & 1u));
+  unsigned realised_inside = 0;
+  if (other_closed != 0) {
+    const float sine = dyop::detail::flat_face_sine<float>();
+    // flat[w][side]: lanes where the edge from w to its next (side 0) or previous (side 1)
+    // vertex is an outline edge lying flat, seen from w.
+    unsigned flat_at[3] = {0, 0, 0};
+    for (int w = 0; w < 3; ++w) {
+      const int after = next3(w);
+      const int before = next3(after);
+      const int edges[2] = {w, before};
+      const int ends[2] = {after, before};
+      for (int side = 0; side < 2; ++side) {
+        if (((other_internal >> edges[side]) & 1u) != 0) continue;
+        const int end = ends[side];
+        const float bound = sine * sine * (other[end] - other[w]).squaredNorm();
+        const __m128 rise = _mm_sub_ps(d[end], d[w]);
+        flat_at[w] |= static_cast<unsigned>(_mm_movemask_ps(
+                          _mm_cmple_ps(_mm_mul_ps(rise, rise), _mm_set1_ps(bound)))) &
+                      7u;
+      }
+      if (((other_closed >> w) & 1u) != 0) realised_inside |= deep_at[w] & ~flat_at[w];
+    }
+  }
   EdgeBits out;
-  out.allowed = ~(internal | closed_hit) & 7u;
+  out.allowed = ~(internal | realised_inside) & 7u;
   const __m128 out_reach = _mm_set1_ps(reach);
   const __m128 in_reach = _mm_set1_ps(-reach);
   __m128 inside = _mm_castsi128_ps(_mm_set1_epi32(-1));
@@ -189,10 +219,13 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   out.least = select_index(overlap[all_b] < overlap[all_a], all_b, all_a);
   const T reach = q.margin + touching_band(f);  // the manifold's margin and the touching band
   const InternalEdges& m = q.internal_edges;
-  const EdgeBits a = edge_bits(f.ta, f.a, f.b, ccw_edge_bits(f.ta, m.edges & 7u),
-                               ccw_vertex_bits(f.tb, (m.closed_vertices >> 3) & 7u), reach);
-  const EdgeBits b = edge_bits(f.tb, f.b, f.a, ccw_edge_bits(f.tb, (m.edges >> 3) & 7u),
-                               ccw_vertex_bits(f.ta, m.closed_vertices & 7u), reach);
+  const unsigned edges_a = ccw_edge_bits(f.ta, m.edges & 7u);
+  const unsigned edges_b = ccw_edge_bits(f.tb, (m.edges >> 3) & 7u);
+  const EdgeBits a =
+      edge_bits(f.ta, f.a, f.b, edges_a, ccw_vertex_bits(f.tb, (m.closed_vertices >> 3) & 7u),
+                edges_b, reach);
+  const EdgeBits b = edge_bits(f.tb, f.b, f.a, edges_b,
+                               ccw_vertex_bits(f.ta, m.closed_vertices & 7u), edges_a, reach);
   const unsigned touched_a = ~(a.wholly_inside | b.cut_other) & 7u;
   const unsigned touched_b = ~(b.wholly_inside | a.cut_other) & 7u;
   const unsigned allowed = a.allowed | b.allowed << 3;

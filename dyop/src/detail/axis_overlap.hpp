@@ -72,6 +72,41 @@ inline int argmin3(const std::array<T, 6>& v, int first) {
   return first + index;
 }
 
+// The sine of the largest angle between an edge and the face of an axis at which the edge still
+// lies flat on that face (`realised_inside`). Why 1e-3: a body resting or gliding on a flat ground
+// turns by about 1e-6 rad from rounding alone, which must not decide whether its outline face
+// answers; a body tipped by a step is turned by 1e-2 rad and more, and a face so turned is not
+// flat (along it, 1e-3 rad is 0.25 mm of depth over a 0.25 m edge: far below Box2D's 5 mm slop).
+template <class T>
+constexpr T flat_face_sine() {
+  return T(1e-3);
+}
+
+// True when an axis along which the other shape's vertices `v[0..count)` project to `d` (the
+// same index) is realised inside the other body: at its deepest vertex (the least projection,
+// first on ties) when that vertex is closed (its bit set in `closed`), unless an edge of the
+// other shape at that vertex is an outline edge (its bit clear in `internal`: bit j for the edge
+// from vertex j to j + 1, modulo `count`) lying flat on the axis's face (`flat_face_sine`): the
+// axis is then realised along that outline face as well, and which of its ends a rounding made
+// the deepest does not decide whether the pair answers.
+template <class T, class V>
+bool realised_inside(const T* d, const V* v, int count, unsigned closed, unsigned internal) {
+  if (closed == 0) return false;
+  int deep = 0;
+  for (int w = 1; w < count; ++w) deep = d[w] < d[deep] ? w : deep;
+  if (((closed >> deep) & 1u) == 0) return false;
+  const T sine = flat_face_sine<T>();
+  const auto flat_outline = [&](int edge, int end) {
+    const T rise = d[end] - d[deep];
+    return ((internal >> edge) & 1u) == 0 &&
+           rise * rise <= sine * sine * (v[end] - v[deep]).squaredNorm();
+  };
+  const int after = deep + 1 == count ? 0 : deep + 1;
+  const int before = deep == 0 ? count - 1 : deep - 1;
+  if (flat_outline(deep, after) || flat_outline(before, before)) return false;
+  return true;
+}
+
 // Axis k (as `AxisOverlap::axis`) with the other triangle's deepest vertex. Axis of A's edge i:
 // the edge line is A's support, overlap = n_i·a_i − min_B(n_i·b). Axis of B's edge j (u = −n_j):
 // overlap = n_j·b_j − min_A(n_j·a), the deep vertex A's. The face's triangle and the other's

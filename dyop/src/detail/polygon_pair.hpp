@@ -288,18 +288,28 @@ template <class F, class T = typename F::Scalar>
                              m);
 }
 
-// True when axis k is allowed by the masks: its edge not internal, its deepest vertex (of the
-// other shape) not closed.
+// True when axis k is allowed by the masks: its edge not internal, and not realised inside the
+// other body (`detail::realised_inside`, as for triangles).
 template <class F, class T = typename F::Scalar>
 bool axis_allowed(const F& f, const ConvexQuery<T>& q, int k) {
   const bool own_a = f.of_a(k);
   const ShapeMasks& own_masks = own_a ? q.masks_a : q.masks_b;
   const ShapeMasks& other_masks = own_a ? q.masks_b : q.masks_a;
   if (((own_masks.edges >> f.input_edge(own_a, f.edge(k))) & 1) != 0) return false;
-  // The deep vertex is looked for only when the other shape has closed vertices at all.
+  // The deep vertices are looked for only when the other shape has closed vertices at all.
   if (other_masks.closed_vertices == 0) return true;
-  const int deep = overlap_on_axis(f, k).deep;
-  return ((other_masks.closed_vertices >> f.input_vertex(!own_a, deep)) & 1) == 0;
+  const Vec2<T> n = f.normal(own_a, f.edge(k));
+  const Local<T>& other_v = f.vertices(!own_a);
+  const int count = f.count(!own_a);
+  T d[max_polygon_vertices];
+  unsigned closed = 0;
+  unsigned internal = 0;
+  for (int w = 0; w < count; ++w) {
+    d[w] = n.dot(other_v[w]);
+    closed |= ((other_masks.closed_vertices >> f.input_vertex(!own_a, w)) & 1u) << w;
+    internal |= ((other_masks.edges >> f.input_edge(!own_a, w)) & 1u) << w;
+  }
+  return !realised_inside(d, other_v.data(), count, closed, internal);
 }
 
 // What one shape's edges say to the rule (bits by CCW edge), as `detail::edge_bits` for triangles.
