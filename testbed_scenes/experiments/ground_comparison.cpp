@@ -25,7 +25,8 @@ using Ring = std::vector<b2Vec2>;
 constexpr float kPush = 4;        // m/s, the glides' push
 constexpr int kGlideSteps = 240;  // 4 s: 16 m at kPush, within every level's flat stretch
 constexpr int kPlacementSteps = 180;
-constexpr int kPlacedBoxes = 10;  // 2 m apart from x = 2.5 m, within the flat stretch
+constexpr int kPlacedBoxes = 10;     // 2 m apart from x = 2.5 m, within the flat stretch
+constexpr float kDeepStart = -0.1f;  // m: a box's centre started under the top, 0.4 m inside
 
 // The tile grid: 256 × 64 cells of 0.5 m; its surface row 48 over the first 48 columns (the
 // flat stretch, top at y = 0), hills beyond, caves under, all below the top of the flat stretch.
@@ -277,13 +278,31 @@ b2Body* add_apart(worlds::World& world, const b2Shape* shape, const b2Vec2& at, 
   return body;
 }
 
-std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
+// The glides' bodies, resting on the flat stretch at x = 2 m and pushed at kPush.
+std::vector<b2Body*> add_gliders(worlds::World& world, const Shapes& shapes) {
   std::vector<b2Body*> bodies;
   for (const auto& entry : shapes.all()) {
     const b2Shape* shape = entry.second;
-    bodies.push_back(add_apart(built.world, shape, {2, resting_height(shape) + 0.005f}, 0));
+    bodies.push_back(add_apart(world, shape, {2, resting_height(shape) + 0.005f}, 0));
     bodies.back()->SetLinearVelocity({kPush, 0});
   }
+  return bodies;
+}
+
+// A placement trial's kPlacedBoxes boxes, centres at height `y` moving down at `speed`.
+std::vector<b2Body*> add_placed_boxes(worlds::World& world, const Shapes& shapes, float y,
+                                      float speed) {
+  std::vector<b2Body*> boxes;
+  for (int k = 0; k < kPlacedBoxes; ++k) {
+    b2Body* b = add_apart(world, &shapes.box, {2.5f + 2 * static_cast<float>(k), y}, 0.6f);
+    b->SetLinearVelocity({0, -speed});
+    boxes.push_back(b);
+  }
+  return boxes;
+}
+
+std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
+  const std::vector<b2Body*> bodies = add_gliders(built.world, shapes);
   std::vector<double> vertical(bodies.size(), 0);
   for (int i = 0; i < kGlideSteps; ++i) {
     built.world.step();
@@ -307,20 +326,13 @@ std::vector<GroundPlacement> placements(Built& built, const Shapes& shapes) {
   };
   const Trial trials[] = {{"started 0.1 m inside", 0.2f, 0},
                           {"started 0.25 m inside", 0.05f, 0},
-                          {"started 0.4 m inside (centre under the top)", -0.1f, 0},
+                          {"started 0.4 m inside (centre under the top)", kDeepStart, 0},
                           {"thrown down at 30 m/s", 5, 30},
                           {"thrown down at 100 m/s", 5, 100},
                           {"thrown down at 300 m/s", 5, 300}};
   std::vector<std::vector<b2Body*>> boxes;
-  for (const Trial& t : trials) {
-    boxes.emplace_back();
-    for (int k = 0; k < kPlacedBoxes; ++k) {
-      b2Body* b =
-          add_apart(built.world, &shapes.box, {2.5f + 2 * static_cast<float>(k), t.y}, 0.6f);
-      b->SetLinearVelocity({0, -t.speed});
-      boxes.back().push_back(b);
-    }
-  }
+  for (const Trial& t : trials)
+    boxes.push_back(add_placed_boxes(built.world, shapes, t.y, t.speed));
   for (int i = 0; i < kPlacementSteps; ++i) built.world.step();
   std::vector<GroundPlacement> out;
   for (std::size_t k = 0; k < boxes.size(); ++k) {
@@ -512,6 +524,32 @@ std::array<GroundRun, 2> compare_ground(GroundLevel level, const GroundTiming& t
     r.step_ms = scenes::median(step[static_cast<int>(build)]);
   }
   return out;
+}
+
+std::string ground_recording_name(GroundLevel level) {
+  return std::string("grounds-") + name(level);
+}
+
+std::optional<GroundLevel> ground_level_of_recording(const std::string& name) {
+  for (const GroundLevel level : ground_levels) {
+    if (ground_recording_name(level) == name) return level;
+  }
+  return std::nullopt;
+}
+
+LockstepRecording record_ground(GroundLevel level, const std::array<scenes::Runner, 2>& runners,
+                                int steps, const std::array<box2d::Config, 2>& configs) {
+  if (!builders_available(level)) {
+    throw std::runtime_error(std::string("grounds: no builder for level ") + name(level) +
+                             " in this build (dyop::box2d_outlines needs GEOS)");
+  }
+  const Shapes shapes;
+  return record_sides(ground_recording_name(level), runners, steps, configs, [&](int side) {
+    auto built = std::make_shared<Built>(level, ground_builds[static_cast<std::size_t>(side)]);
+    add_gliders(built->world, shapes);
+    add_placed_boxes(built->world, shapes, kDeepStart, 0);
+    return SideWorld{built, &built->world, 1};
+  });
 }
 
 }  // namespace dyop::experiments

@@ -17,6 +17,7 @@
 #include <box2d/b2_math.h>
 
 #include "dyop/box2d.hpp"
+#include "experiments/lockstep_recording.hpp"
 
 namespace dyop::experiments {
 
@@ -97,5 +98,22 @@ GroundTiming ground_timing(GroundLevel level, bool quick, std::optional<int> ste
 /// builders refuse the level or this build has none for it (`builders_available`).
 std::array<GroundRun, 2> compare_ground(GroundLevel level, const GroundTiming& timing,
                                         const box2d::Config& config);
+
+/// Steps of a level's recording by default (`record_ground`): the glides' 4 s.
+inline constexpr int ground_recording_steps = 240;
+
+/// The name a level's recording goes by: "grounds-" and the level's name ("grounds-flat").
+std::string ground_recording_name(GroundLevel level);
+
+/// The level whose recording is called `name` (`ground_recording_name`); none for another name.
+std::optional<GroundLevel> ground_level_of_recording(const std::string& name);
+
+/// `level` built both ways with the glides' bodies pushed along its flat stretch and the boxes
+/// started 0.4 m inside it, in one world each way, recorded for `steps` (≥ 1) steps for a viewer
+/// page (`record_sides`): side A the chains under `runners[0]` with `configs[0]` (the comparison's:
+/// Box2D's own contact), side B the builders under `runners[1]` with `configs[1]` (the plug-in).
+/// Named by `ground_recording_name`. Throws as `compare_ground` and `record_sides`.
+LockstepRecording record_ground(GroundLevel level, const std::array<scenes::Runner, 2>& runners,
+                                int steps, const std::array<box2d::Config, 2>& configs);
 
 }  // namespace dyop::experiments

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <string>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -63,7 +65,19 @@ DrawShape::Role role_of(const b2Body& b) {
                                            : DrawShape::Role::Dynamic;
 }
 
+ViewFixture segment_of(int body, const b2EdgeShape& e) {
+  ViewFixture f;
+  f.body = body;
+  f.radius = e.m_radius;
+  f.kind = DrawShape::Kind::Segment;
+  f.points = {e.m_vertex1, e.m_vertex2};
+  return f;
+}
+
 ViewFixture fixture_of(int body, const b2Shape& shape) {
+  if (shape.GetType() == b2Shape::e_edge) {
+    return segment_of(body, static_cast<const b2EdgeShape&>(shape));
+  }
   ViewFixture f;
   f.body = body;
   f.radius = shape.m_radius;
@@ -77,14 +91,8 @@ ViewFixture fixture_of(int body, const b2Shape& shape) {
       f.kind = DrawShape::Kind::Circle;
       f.points.push_back(static_cast<const b2CircleShape&>(shape).m_p);
       break;
-    case b2Shape::e_edge: {
-      const auto& e = static_cast<const b2EdgeShape&>(shape);
-      f.kind = DrawShape::Kind::Segment;
-      f.points = {e.m_vertex1, e.m_vertex2};
-      break;
-    }
     default:
-      break;  // the scenes make no chains
+      break;  // edges: `segment_of`; chains: one segment per child (`index_of`)
   }
   return f;
 }
@@ -113,51 +121,60 @@ void mark_against_box2d(ViewContact& v, const b2PolygonShape& a, const b2Transfo
   if (v.mark != EdgeMark::None) v.box2d = box2d;
 }
 
-// The frame, its contacts sorted, after the others.
-void add_frame(std::vector<ViewFrame>& frames, ViewFrame&& frame) {
+// The frame's contacts sorted by (fixture_a, fixture_b).
+void sort_contacts(ViewFrame& frame) {
   std::sort(frame.contacts.begin(), frame.contacts.end(),
             [](const ViewContact& x, const ViewContact& y) {
               return std::pair(x.fixture_a, x.fixture_b) < std::pair(y.fixture_a, y.fixture_b);
             });
+}
+
+// The frame, its contacts sorted, after the others.
+void add_frame(std::vector<ViewFrame>& frames, ViewFrame&& frame) {
+  sort_contacts(frame);
   frames.push_back(std::move(frame));
 }
 
-// The world's bodies and fixtures as indices, in creation order and fixture-list order: the
-// same in both runners' worlds, built from the same seed.
+// A world's bodies and fixtures as indices, in creation order and fixture-list order, a chain's
+// children one segment fixture each (at its fixture's index plus the child's).
 struct WorldIndex {
   std::unordered_map<const b2Body*, int> body;
-  std::unordered_map<const b2Fixture*, int> fixture;
+  std::unordered_map<const b2Fixture*, int> fixture;  // its first child's
+  std::vector<DrawShape::Role> roles;
+  std::vector<ViewFixture> fixtures;
+  int of(const b2Fixture* f, int child) const { return fixture.at(f) + child; }
 };
 
-WorldIndex index_world(const scenes::World& world, LockstepRecording& out) {
+WorldIndex index_of(const scenes::World& world) {
   WorldIndex index;
-  const bool layout = out.bodies.empty();
-  int fixtures = 0;
   for (const b2Body* b : world.bodies()) {
-    const int body = static_cast<int>(index.body.size());
+    const int body = static_cast<int>(index.roles.size());
     index.body[b] = body;
-    if (layout) out.bodies.push_back(role_of(*b));
+    index.roles.push_back(role_of(*b));
     for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
-      index.fixture[f] = fixtures++;
-      if (layout) out.fixtures.push_back(fixture_of(body, *f->GetShape()));
+      index.fixture[f] = static_cast<int>(index.fixtures.size());
+      if (f->GetType() != b2Shape::e_chain) {
+        index.fixtures.push_back(fixture_of(body, *f->GetShape()));
+        continue;
+      }
+      const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
+      for (int child = 0; child < chain->GetChildCount(); ++child) {
+        b2EdgeShape edge;
+        chain->GetChildEdge(&edge, child);
+        index.fixtures.push_back(segment_of(body, edge));
+      }
     }
-  }
-  if (index.body.size() != out.bodies.size() || std::size_t(fixtures) != out.fixtures.size()) {
-    throw std::logic_error("the two runners' worlds of '" + out.scene + "' differ in bodies");
   }
   return index;
 }
 
-std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::Config& config,
-                                    LockstepRecording& out) {
-  const scenes::Installation installed(runner, config);
-  scenes::SceneWorld scene(out.scene, out.seed);
-  scenes::World& world = scene.world();
-  const WorldIndex index = index_world(world, out);
+// `world`, its runner installed, stepped `steps` times: its frames, bodies and fixtures by `index`.
+std::vector<ViewFrame> record_steps(scenes::World& world, const scenes::Runner& runner, int steps,
+                                    const WorldIndex& index) {
   const std::vector<b2Body*>& bodies = world.bodies();
   std::vector<b2Transform> before(bodies.size());
   std::vector<ViewFrame> frames;
-  for (int step = 0; step < out.steps; ++step) {
+  for (int step = 0; step < steps; ++step) {
     for (std::size_t i = 0; i < bodies.size(); ++i) before[i] = bodies[i]->GetTransform();
     world.step();
     ViewFrame frame;
@@ -169,10 +186,17 @@ std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::C
       const b2Body* ba = fa->GetBody();
       const b2Body* bb = fb->GetBody();
       ViewContact v;
-      v.fixture_a = index.fixture.at(fa);
-      v.fixture_b = index.fixture.at(fb);
-      v.manifold = view_of(*c->GetManifold(), ba->GetTransform(), *fa->GetShape(),
-                           bb->GetTransform(), *fb->GetShape());
+      v.fixture_a = index.of(fa, c->GetChildIndexA());
+      v.fixture_b = index.of(fb, c->GetChildIndexB());
+      // A chain's manifold is its child edge's (`b2ChainAndPolygonContact`): the edge is shape A.
+      b2EdgeShape edge;
+      const b2Shape* shape_a = fa->GetShape();
+      if (fa->GetType() == b2Shape::e_chain) {
+        static_cast<const b2ChainShape*>(shape_a)->GetChildEdge(&edge, c->GetChildIndexA());
+        shape_a = &edge;
+      }
+      v.manifold = view_of(*c->GetManifold(), ba->GetTransform(), *shape_a, bb->GetTransform(),
+                           *fb->GetShape());
       if (runner && fa->GetType() == b2Shape::e_polygon && fb->GetType() == b2Shape::e_polygon) {
         // On the poses the step's Collide saw (time-of-impact re-evaluations, at other poses, can
         // show as marks).
@@ -186,6 +210,23 @@ std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::C
     add_frame(frames, std::move(frame));
   }
   return frames;
+}
+
+// A catalogue scene under one runner: both runners' worlds, built from the same seed, have the
+// same bodies and fixtures; the first recorded sets the layout.
+std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::Config& config,
+                                    LockstepRecording& out) {
+  const scenes::Installation installed(runner, config);
+  scenes::SceneWorld scene(out.scene, out.seed);
+  WorldIndex index = index_of(scene.world());
+  if (out.bodies.empty()) {
+    out.bodies = index.roles;
+    out.fixtures = index.fixtures;
+  } else if (index.roles.size() != out.bodies.size() ||
+             index.fixtures.size() != out.fixtures.size()) {
+    throw std::logic_error("the two runners' worlds of '" + out.scene + "' differ in bodies");
+  }
+  return record_steps(scene.world(), runner, out.steps, index);
 }
 
 // The paper's triangles on their paths: one kinematic body each, their overlapping pairs handed
@@ -266,6 +307,28 @@ void agree(ViewFrame& frame, const ViewFrame& other) {
   }
 }
 
+// Marks what the two runners agree on, step by step.
+void agree_frames(LockstepRecording& out) {
+  for (int step = 0; step < out.steps; ++step) {
+    agree(out.frames[0][step], out.frames[1][step]);
+    agree(out.frames[1][step], out.frames[0][step]);
+  }
+}
+
+// A recording's header, before any frame; `steps` must be at least 1.
+LockstepRecording empty_recording(std::string name, const std::array<scenes::Runner, 2>& runners,
+                                  int steps, const std::array<box2d::Config, 2>& configs,
+                                  double time_step) {
+  if (steps < 1) throw std::invalid_argument("a recording needs at least 1 step");
+  LockstepRecording out;
+  out.scene = std::move(name);
+  out.steps = steps;
+  out.runners = runners;
+  out.configs = configs;
+  out.time_step = time_step;
+  return out;
+}
+
 }  // namespace
 
 float ViewManifold::deepest() const {
@@ -279,23 +342,97 @@ LockstepRecording record_lockstep(std::string_view name,
   if (scenes::find_scene(name) == nullptr) {
     throw std::invalid_argument("no scene called '" + std::string(name) + "'");
   }
-  if (steps < 1) throw std::invalid_argument("a recording needs at least 1 step");
-  LockstepRecording out;
-  out.scene = std::string(name);
-  out.seed = seed;
-  out.steps = steps;
-  out.runners = runners;
-  out.configs = configs;
   const bool paper = name == "paper";
-  out.time_step = paper ? scenes::paper::step_seconds : double(scenes::time_step);
+  LockstepRecording out =
+      empty_recording(std::string(name), runners, steps, configs,
+                      paper ? scenes::paper::step_seconds : double(scenes::time_step));
+  out.seed = seed;
   for (int r = 0; r < 2; ++r) {
     out.frames[r] = paper ? record_paper(runners[r], configs[r], out)
                           : record_world(runners[r], configs[r], out);
   }
-  for (int step = 0; step < steps; ++step) {
-    agree(out.frames[0][step], out.frames[1][step]);
-    agree(out.frames[1][step], out.frames[0][step]);
+  agree_frames(out);
+  return out;
+}
+
+LockstepRecording record_sides(std::string name, const std::array<scenes::Runner, 2>& runners,
+                               int steps, const std::array<box2d::Config, 2>& configs,
+                               const std::function<SideWorld(int side)>& build) {
+  LockstepRecording out =
+      empty_recording(std::move(name), runners, steps, configs, double(scenes::time_step));
+  std::array<WorldIndex, 2> index;
+  std::array<int, 2> own_bodies{};
+  std::array<int, 2> own_fixtures{};
+  for (int side = 0; side < 2; ++side) {
+    const scenes::Installation installed(runners[side], configs[side]);
+    const SideWorld w = build(side);
+    if (!w.world || w.own_bodies < 0 || w.own_bodies > static_cast<int>(w.world->bodies().size())) {
+      throw std::logic_error("record_sides: side " + std::to_string(side) + " built no world");
+    }
+    index[side] = index_of(*w.world);
+    own_bodies[side] = w.own_bodies;
+    own_fixtures[side] = 0;
+    for (const ViewFixture& f : index[side].fixtures) own_fixtures[side] += f.body < w.own_bodies;
+    out.frames[side] = record_steps(*w.world, runners[side], steps, index[side]);
   }
+  // The layout: A's own bodies and fixtures, B's, then the shared ones (A's and B's alike).
+  const auto shared_bodies = [&](int side) {
+    return static_cast<int>(index[side].roles.size()) - own_bodies[side];
+  };
+  const auto shared_fixtures = [&](int side) {
+    return static_cast<int>(index[side].fixtures.size()) - own_fixtures[side];
+  };
+  if (shared_bodies(0) != shared_bodies(1) || shared_fixtures(0) != shared_fixtures(1)) {
+    throw std::logic_error("record_sides: the two sides' moving bodies differ");
+  }
+  const std::array<int, 2> body_offset = {0, own_bodies[0]};
+  const std::array<int, 2> fixture_offset = {0, own_fixtures[0]};
+  const int shared_body_at = own_bodies[0] + own_bodies[1];
+  const int shared_fixture_at = own_fixtures[0] + own_fixtures[1];
+  const auto body_of = [&](int side, int b) {
+    return b < own_bodies[side] ? body_offset[side] + b : shared_body_at + b - own_bodies[side];
+  };
+  const auto fixture_of_side = [&](int side, int f) {
+    return f < own_fixtures[side] ? fixture_offset[side] + f
+                                  : shared_fixture_at + f - own_fixtures[side];
+  };
+  out.bodies.resize(static_cast<std::size_t>(shared_body_at + shared_bodies(0)));
+  out.fixtures.resize(static_cast<std::size_t>(shared_fixture_at + shared_fixtures(0)));
+  for (int side = 0; side < 2; ++side) {
+    for (std::size_t b = 0; b < index[side].roles.size(); ++b) {
+      out.bodies[body_of(side, static_cast<int>(b))] = index[side].roles[b];
+    }
+    for (std::size_t f = 0; f < index[side].fixtures.size(); ++f) {
+      ViewFixture v = index[side].fixtures[f];
+      const bool own = v.body < own_bodies[side];
+      v.body = body_of(side, v.body);
+      v.side = own ? side : -1;
+      out.fixtures[fixture_of_side(side, static_cast<int>(f))] = std::move(v);
+    }
+  }
+  // Each side's frames in the layout; the other side's own bodies at their first recorded poses
+  // (their fixtures are not drawn on this side).
+  std::array<std::vector<BodyPose>, 2> first_poses = {out.frames[0][0].poses,
+                                                      out.frames[1][0].poses};
+  for (int side = 0; side < 2; ++side) {
+    const int other = 1 - side;
+    for (ViewFrame& frame : out.frames[side]) {
+      std::vector<BodyPose> poses(out.bodies.size());
+      for (int b = 0; b < own_bodies[other]; ++b) {
+        poses[body_of(other, b)] = first_poses[other][static_cast<std::size_t>(b)];
+      }
+      for (std::size_t b = 0; b < frame.poses.size(); ++b) {
+        poses[body_of(side, static_cast<int>(b))] = frame.poses[b];
+      }
+      frame.poses = std::move(poses);
+      for (ViewContact& c : frame.contacts) {
+        c.fixture_a = fixture_of_side(side, c.fixture_a);
+        c.fixture_b = fixture_of_side(side, c.fixture_b);
+      }
+      sort_contacts(frame);
+    }
+  }
+  agree_frames(out);
   return out;
 }
 

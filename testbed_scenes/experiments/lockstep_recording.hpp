@@ -21,6 +21,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +30,7 @@
 #include "dyop/box2d.hpp"
 #include "scenes/drawing.hpp"
 #include "scenes/runner.hpp"
+#include "scenes/world.hpp"
 
 namespace dyop::experiments {
 
@@ -50,6 +53,9 @@ struct ViewFixture {
   /// i + 1, the reference edge's numbering); circle: its centre; segment: its two ends.
   std::vector<b2Vec2> points;
   float radius = 0;  ///< `b2Shape::m_radius`: a circle's radius, a polygon's or edge's skin
+  /// Whose world holds it: -1 both runners' (a scene), 0 or 1 runner A's or B's alone (a level
+  /// built two ways: `record_sides`), drawn on that runner's side only.
+  int side = -1;
 };
 
 /// Where a body is after a step.
@@ -126,6 +132,27 @@ struct LockstepRecording {
   std::vector<ViewFixture> fixtures;
   std::array<std::vector<ViewFrame>, 2> frames;  ///< per runner, one per step
 };
+
+/// One side's world for `record_sides`, built under that side's runner: the first `own_bodies`
+/// of `world->bodies()` are this side's alone (its ground), the others the moving bodies, made in
+/// the same order with the same fixtures on both sides. `owner` keeps the world and what its
+/// ground needs alive while it is recorded.
+struct SideWorld {
+  std::shared_ptr<void> owner;
+  scenes::World* world = nullptr;
+  int own_bodies = 0;
+};
+
+/// Records two worlds that differ in their grounds (`dyop compare`'s grounds section: a level as
+/// Box2D's chains and through the plug-in's builders): `build(side)` makes side 0's world under
+/// `runners[0]` with `configs[0]`, then side 1's; each is stepped `steps` (≥ 1) times. Bodies and
+/// fixtures: A's own, B's own, then the shared ones (`ViewFixture::side`); a chain is drawn as its
+/// edges, one segment fixture per child, and its contacts name their child's. Only the shared
+/// bodies' contacts can agree. Throws `std::invalid_argument` for `steps` < 1 and
+/// `std::logic_error` when a side builds no world or the sides' moving bodies differ.
+LockstepRecording record_sides(std::string name, const std::array<scenes::Runner, 2>& runners,
+                               int steps, const std::array<box2d::Config, 2>& configs,
+                               const std::function<SideWorld(int side)>& build);
 
 /// Records scene `name` of the catalogue for `steps` steps (≥ 1) under `runners[0]` with
 /// `configs[0]` and then `runners[1]` with `configs[1]` (the same runner twice with two configs

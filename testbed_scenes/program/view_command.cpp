@@ -13,6 +13,7 @@
 #include <system_error>
 #include <vector>
 
+#include "experiments/ground_comparison.hpp"
 #include "experiments/lockstep_recording.hpp"
 #include "program/commands.hpp"
 #include "report/format.hpp"
@@ -67,7 +68,9 @@ void write_summary(const experiments::LockstepRecording& r, const std::string& p
 
 int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err) {
   const SceneInfo* info = find_scene(c.scene);
-  if (info == nullptr) {
+  const std::optional<experiments::GroundLevel> level =
+      experiments::ground_level_of_recording(c.scene);
+  if (info == nullptr && !level) {
     err << "dyop view: unknown scene '" << c.scene << "'\n";
     return exit_usage_error;
   }
@@ -142,8 +145,11 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
 
   experiments::LockstepRecording recording;
   try {
-    recording = experiments::record_lockstep(
-        c.scene, runners, c.steps.value_or(info->default_steps), c.seed, configs);
+    recording =
+        level ? experiments::record_ground(
+                    *level, runners, c.steps.value_or(experiments::ground_recording_steps), configs)
+              : experiments::record_lockstep(
+                    c.scene, runners, c.steps.value_or(info->default_steps), c.seed, configs);
     report::write_viewer_page(recording, html.stream());
   } catch (const std::exception& e) {
     err << "dyop view: " << c.scene << " could not run: " << e.what() << '\n';
@@ -168,13 +174,22 @@ void add_view_command(CLI::App& app, int& exit_code) {
   auto steps = std::make_shared<int>(0);
   std::vector<std::string> names, runners;
   for (const SceneInfo& s : scene_catalog()) names.push_back(s.name);
+  for (const experiments::GroundLevel level : experiments::ground_levels) {
+    if (experiments::builders_available(level)) {
+      names.push_back(experiments::ground_recording_name(level));
+    }
+  }
   for (box2d::Backend b : box2d::all_backends) runners.push_back(box2d::name(b));
   runners.push_back(box2d_own);
   CLI::App* cmd = app.add_subcommand(
       "view",
       "Record one scene under two runners and write one self-contained HTML page that plays "
       "them back side by side or overlaid, with their contacts (open it in a browser)");
-  cmd->add_option("name", args->scene, "Scene")->required()->check(CLI::IsMember(names));
+  cmd->add_option("name", args->scene,
+                  "Scene, or a level of the grounds comparison (grounds-LEVEL: A the level as "
+                  "Box2D's chains, B through the plug-in's builders)")
+      ->required()
+      ->check(CLI::IsMember(names));
   cmd->add_option("--runner,-r", args->runners,
                   "The two runners, A then B (give it twice): a backend of the plug-in, or "
                   "box2d-own (the plug-in not installed)")

@@ -5,8 +5,11 @@
 /// under two runners
 /// (by default Box2D's own contact and the plug-in's `dyop`; `experiments/lockstep_recording.hpp`)
 /// and writes one self-contained HTML page that plays them back side by side
-/// (`report/viewer_page.hpp`). The command line (CLI11, `add_view_command`) validates names;
-/// this checks them again, checks files and runs.
+/// (`report/viewer_page.hpp`). SCENE may also be a level of the grounds comparison,
+/// `grounds-flat`, `grounds-tile-grid` or `grounds-outline` (`experiments::record_ground`): A's
+/// world the level as Box2D's chains, B's through the plug-in's builders, the same bodies on both.
+/// The command line (CLI11, `add_view_command`) validates names; this checks them again, checks
+/// files and runs.
 
 #include <cstdint>
 #include <iosfwd>
@@ -17,10 +20,11 @@
 namespace dyop::cli {
 
 struct ViewCommand {
-  std::string scene;  ///< a name of `scenes::scene_catalog()`
+  /// A name of `scenes::scene_catalog()`, or `experiments::ground_recording_name` of a level.
+  std::string scene;
   /// Two runners (`scenes::parse_runner`): A (blue on the page), then B (orange).
   std::vector<std::string> runners = {"box2d-own", "dyop"};
-  std::optional<int> steps;  ///< none: the scene's default
+  std::optional<int> steps;  ///< none: the scene's default (a level's: 240)
   std::uint64_t seed = 0;
   /// `parse_skips` arguments: one for both runners, or A's then B's.
   std::vector<std::string> skips = {"all"};

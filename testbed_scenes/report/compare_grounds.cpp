@@ -1,8 +1,11 @@
 // `dyop compare`'s grounds section: each level built as Box2D's chain loops (Box2D's own contact)
 // and through the plug-in's builders (the plug-in), side by side
 // (`experiments/ground_comparison.hpp`): the ground's size and build time, everyday bodies gliding,
-// boxes started inside or thrown at it, and a crowd's narrow phase and step in wall time.
+// boxes started inside or thrown at it, a crowd's narrow phase and step in wall time, and a
+// viewer page per level (`view_grounds-<level>.html`: the glides and the boxes started inside, the
+// chain's world beside the builders').
 #include <array>
+#include <sstream>
 #include <stdexcept>
 
 #include "experiments/ground_comparison.hpp"
@@ -11,6 +14,7 @@
 #include "report/compare_summary.hpp"
 #include "report/format.hpp"
 #include "report/records.hpp"
+#include "report/viewer_page.hpp"
 
 namespace dyop::report {
 namespace {
@@ -40,6 +44,7 @@ class GroundsSection : public CompareSection {
 
   void run(const SectionContext& c) override {
     using experiments::detail::fixed;
+    out_dir_ = c.options.out_dir;
     for (const GroundLevel level : experiments::ground_levels) {
       if (!experiments::builders_available(level)) {
         skipped_.push_back(level);
@@ -48,7 +53,13 @@ class GroundsSection : public CompareSection {
       const double start = c.elapsed();
       const experiments::GroundTiming t =
           experiments::ground_timing(level, c.options.quick, c.options.steps);
-      parts_.push_back({level, experiments::compare_ground(level, t, c.options.skips), t});
+      std::ostringstream page;
+      write_viewer_page(experiments::record_ground(level, {std::nullopt, box2d::Backend::Dyop},
+                                                   experiments::ground_recording_steps,
+                                                   {c.options.skips, c.options.skips}),
+                        page);
+      parts_.push_back(
+          {level, experiments::compare_ground(level, t, c.options.skips), t, page.str()});
       c.progress << "[grounds] " << experiments::name(level) << ", chain and builders, crowd of "
                  << t.bodies << " for " << t.steps << " steps × " << t.runs
                  << " alternating runs: " << fixed(c.elapsed() - start, 2) << " s (total "
@@ -63,9 +74,18 @@ class GroundsSection : public CompareSection {
     out << "\nGrounds built as Box2D's chains (Box2D's own contact) and by the plug-in's builders "
            "(the plug-in), the same bodies on each:\n\n";
     tables(out);
+    out << "\nViewer pages (the level as chains under Box2D's own contact, A, beside the "
+           "builders' under the plug-in, B; open in a browser):\n";
+    for (const Part& p : parts_) {
+      out << "  " << out_dir_ << '/' << page_file(p.level) << "  ("
+          << fmt("%.1f", double(p.page.size()) / 1e6) << " MB)\n";
+    }
   }
 
   void write_files(ReportDirectory& dir, Charts&) const override {
+    for (const Part& p : parts_) {
+      dir.write(page_file(p.level), [&](std::ostream& o) { o << p.page; });
+    }
     dir.write("grounds.csv", [&](std::ostream& o) { ground_records().write_csv(o); });
     dir.write("grounds_glides.csv", [&](std::ostream& o) { glide_records().write_csv(o); });
     dir.write("grounds_placements.csv", [&](std::ostream& o) { placement_records().write_csv(o); });
@@ -99,6 +119,13 @@ class GroundsSection : public CompareSection {
          "ground or thrown down at it from 5 m, 3 s: how many end with their centre above the "
          "top.\n\n";
     tables(o);
+    o << "\nStep by step in a browser (`dyop view grounds-<level>`: the glides' bodies and the "
+         "boxes "
+         "started 0.4 m inside, 4 s, the chain's world as A beside the builders' as B):";
+    for (const Part& p : parts_) {
+      o << " [" << experiments::name(p.level) << "](" << page_file(p.level) << ")";
+    }
+    o << ".\n";
     for (const GroundLevel level : skipped_) {
       o << "\n*Level `" << experiments::name(level)
         << "` not run: this build has no `dyop::box2d_outlines` (GEOS not found).*\n";
@@ -128,11 +155,13 @@ class GroundsSection : public CompareSection {
       g.step_ratio = builders.step_ms / chain.step_ms;
       figures.grounds.push_back(g);
     }
+    figures.viewer_pages = figures.viewer_pages || !parts_.empty();
   }
 
   std::string files() const override {
     return "`grounds.csv` (each level's ground both ways: size, build, crowd), "
-           "`grounds_glides.csv`, `grounds_placements.csv`";
+           "`grounds_glides.csv`, `grounds_placements.csv`, `view_grounds-<level>.html` (viewer "
+           "pages: chains against builders)";
   }
 
   void problems(std::vector<std::string>& lines) const override {
@@ -147,7 +176,12 @@ class GroundsSection : public CompareSection {
     GroundLevel level;
     std::array<GroundRun, 2> runs;  // chain, builders
     experiments::GroundTiming timing;
+    std::string page;  // the level's viewer page (`record_ground`)
   };
+
+  static std::string page_file(GroundLevel level) {
+    return "view_" + experiments::ground_recording_name(level) + ".html";
+  }
 
   void tables(std::ostream& out) const {
     Records grounds = ground_records(true);
@@ -258,6 +292,7 @@ class GroundsSection : public CompareSection {
 
   std::vector<Part> parts_;
   std::vector<GroundLevel> skipped_;
+  std::string out_dir_;
 };
 
 }  // namespace

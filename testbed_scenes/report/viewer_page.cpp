@@ -288,7 +288,7 @@ Json page_data(const LockstepRecording& r) {
       points.push_back(double(quantise(p.x, 1e-5)) * 1e-5);
       points.push_back(double(quantise(p.y, 1e-5)) * 1e-5);
     }
-    fixtures.push_back({f.body, int(f.kind), points, f.radius});
+    fixtures.push_back({f.body, int(f.kind), points, f.radius, f.side});
   }
   d["fixture_shapes"] = fixtures;
   d["quanta"] = {{"position", position_quantum},

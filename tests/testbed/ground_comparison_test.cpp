@@ -125,5 +125,52 @@ TEST(Grounds, TheBuildersGroundGlidesAndPushesOutWhatTheChainLetsThrough) {
   }
 }
 
+// The flat level recorded both ways for the viewer: each ground's fixtures on its own side (the
+// chain as one segment per edge, the builders' triangles), the moving bodies shared; every contact
+// names fixtures of its own runner's world; the boxes started 0.4 m inside end under the chain
+// and on top of the builders' ground.
+TEST(Grounds, TheRecordingDrawsEachGroundOnItsSideAndSharesTheMovingBodies) {
+  const LockstepRecording r = record_ground(GroundLevel::Flat, {std::nullopt, box2d::Backend::Dyop},
+                                            120, {box2d::Config::all(), box2d::Config::all()});
+  EXPECT_EQ(r.scene, "grounds-flat");
+  ASSERT_EQ(r.bodies.size(), 2u + 4u + 10u);  // two grounds, the gliders, the boxes
+  int own[2] = {0, 0};
+  int shared = 0;
+  for (const ViewFixture& f : r.fixtures) {
+    if (f.side < 0) {
+      ++shared;
+      EXPECT_GE(f.body, 2);
+      continue;
+    }
+    ++own[f.side];
+    EXPECT_EQ(f.body, f.side);
+    EXPECT_EQ(f.kind,
+              f.side == 0 ? scenes::DrawShape::Kind::Segment : scenes::DrawShape::Kind::Polygon);
+  }
+  EXPECT_GT(own[0], 100);  // a vertex every 0.25 m along 140 m of boundary
+  EXPECT_GT(own[1], 100);
+  EXPECT_EQ(shared, 3 + 2 + 10);  // box, hexagon, ball; the box of two triangles; the boxes
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_EQ(r.frames[k].size(), 120u);
+    for (const ViewFrame& frame : r.frames[k]) {
+      ASSERT_EQ(frame.poses.size(), r.bodies.size());
+      for (const ViewContact& c : frame.contacts) {
+        for (const int f : {c.fixture_a, c.fixture_b}) {
+          const int side = r.fixtures[static_cast<std::size_t>(f)].side;
+          EXPECT_TRUE(side < 0 || side == k) << "runner " << k << ", fixture " << f;
+        }
+      }
+    }
+    for (std::size_t b = r.bodies.size() - 10; b < r.bodies.size(); ++b) {
+      const float y = r.frames[k].back().poses[b].y;
+      if (k == 0) {
+        EXPECT_LT(y, 0) << "the chain holds a box started inside it";
+      } else {
+        EXPECT_GT(y, 0) << "the builders' ground leaves a box inside it";
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dyop::experiments

@@ -223,6 +223,19 @@ TEST(ViewCli, SetsTheSameBackendAgainstItselfWithTwoSettings) {
   EXPECT_NEAR(j["recycle_distance"][1].get<double>(), 0.002, 1e-9) << "once: both runners";
 }
 
+// A level of the grounds comparison is a view target: the chain's world as A, the builders' as
+// B, their 240 steps by default.
+TEST(ViewCli, ShowsAGroundsLevelAsChainAgainstBuilders) {
+  const auto dir = temp_dir("view_grounds");
+  const Outcome r =
+      run("view grounds-tile-grid --steps 4 --out " + (dir / "g.html").string() + " --json -");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["scene"], "grounds-tile-grid");
+  EXPECT_EQ(j["frames"].size(), 4u);
+  EXPECT_EQ(run("view grounds-nowhere").status, 1);
+}
+
 TEST(ViewCli, BadArgumentsAreUsageErrorsAndAnUnwritablePageAnIoError) {
   EXPECT_EQ(run("view nope").status, 1);
   EXPECT_EQ(run("view slide --runner nope --runner dyop").status, 1);
