@@ -331,8 +331,9 @@ std::vector<GroundPlacement> placements(Built& built, const Shapes& shapes) {
                           {"thrown down at 100 m/s", 5, 100},
                           {"thrown down at 300 m/s", 5, 300}};
   std::vector<std::vector<b2Body*>> boxes;
-  for (const Trial& t : trials)
+  for (const Trial& t : trials) {
     boxes.push_back(add_placed_boxes(built.world, shapes, t.y, t.speed));
+  }
   for (int i = 0; i < kPlacementSteps; ++i) built.world.step();
   std::vector<GroundPlacement> out;
   for (std::size_t k = 0; k < boxes.size(); ++k) {

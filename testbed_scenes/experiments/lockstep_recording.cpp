@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
-#include <string>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <utility>
 

@@ -120,8 +120,7 @@ class GroundsSection : public CompareSection {
          "top.\n\n";
     tables(o);
     o << "\nStep by step in a browser (`dyop view grounds-<level>`: the glides' bodies and the "
-         "boxes "
-         "started 0.4 m inside, 4 s, the chain's world as A beside the builders' as B):";
+         "boxes started 0.4 m inside, 4 s, the chain's world as A beside the builders' as B):";
     for (const Part& p : parts_) {
       o << " [" << experiments::name(p.level) << "](" << page_file(p.level) << ")";
     }

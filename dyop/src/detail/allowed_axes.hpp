@@ -6,9 +6,8 @@
 // along it. It is allowed when its edge is not internal and it is not realised inside the other
 // body: at a closed vertex of the other triangle (there the outline's directions are other axes,
 // of its own triangle's or of its neighbours' pairs) with no outline edge of it lying flat on the
-// axis's face (`realised_inside`). It is usable
-// when, besides, the other triangle reaches the edge: a push along an edge's normal is a push
-// back out through that edge.
+// axis's face (`realised_inside`). It is usable when, besides, the other triangle reaches the
+// edge: a push along an edge's normal is a push back out through that edge.
 //
 // Used only for pairs not apart beyond the margin (`certify_axes` answers those plainly): no axis
 // then separates the pair beyond the margin, whether usable or not.
@@ -64,7 +63,7 @@ unsigned ccw_vertex_bits(const Triangle<T>& t, unsigned bits) {
 }
 
 // True when axis k of `f` is allowed by `q`'s masks (caller's order, see `Query`).
-// The deep vertices are looked for only when the other triangle has closed vertices at all.
+// The deep vertex is looked for only when the other triangle has closed vertices at all.
 template <class T>
 bool axis_allowed(const PairFrame<T>& f, const Query<T>& q, int k) {
   const bool own_is_a = k < 3;
@@ -143,8 +142,7 @@ inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<floa
   }
   // As `realised_inside`, an own edge per lane: the deep vertex as `realised_inside` picks it
   // (d1 < d0 picks 1, then d2 below the lesser picks 2); a closed one refuses the lane unless an
-  // outline edge of the other at it lies flat (`flat[j]`: the lanes where edge j does, seen from
-  // either end: the same rise and bound as `realised_inside` computes).
+  // outline edge of the other at it lies flat (the same rise and bound as `realised_inside`).
   const unsigned one = static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[1], d[0]))) & 7u;
   const unsigned two =
       static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[2], _mm_min_ps(d[1], d[0])))) & 7u;
@@ -152,8 +150,8 @@ inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<floa
   unsigned realised_inside = 0;
   if (other_closed != 0) {
     const float sine = dyop::detail::flat_face_sine<float>();
-    // flat[w][side]: lanes where the edge from w to its next (side 0) or previous (side 1)
-    // vertex is an outline edge lying flat, seen from w.
+    // flat_at[w]: the lanes where the edge from w to its next or its previous vertex is an
+    // outline edge lying flat, seen from w.
     unsigned flat_at[3] = {0, 0, 0};
     for (int w = 0; w < 3; ++w) {
       const int after = next3(w);

@@ -296,7 +296,7 @@ bool axis_allowed(const F& f, const ConvexQuery<T>& q, int k) {
   const ShapeMasks& own_masks = own_a ? q.masks_a : q.masks_b;
   const ShapeMasks& other_masks = own_a ? q.masks_b : q.masks_a;
   if (((own_masks.edges >> f.input_edge(own_a, f.edge(k))) & 1) != 0) return false;
-  // The deep vertices are looked for only when the other shape has closed vertices at all.
+  // The deep vertex is looked for only when the other shape has closed vertices at all.
   if (other_masks.closed_vertices == 0) return true;
   const Vec2<T> n = f.normal(own_a, f.edge(k));
   const Local<T>& other_v = f.vertices(!own_a);
