@@ -23,8 +23,8 @@ namespace dyop {
 /// The internal-edge rule's masks of one shape (`InternalEdges` for a pair of triangles), bits in
 /// the caller's order: bit i is edge i (from vertex i to i + 1) or vertex i. Meaning as there:
 /// an internal edge's normal is no direction the body's outline allows; no axis of the other shape
-/// whose deepest vertex is a closed vertex is allowed (for a circle: no push along a closed
-/// vertex's normals).
+/// whose deepest vertex is a closed vertex is allowed, but for an outline edge at it lying flat on
+/// the axis's face (for a circle: no push along a closed vertex's normals).
 struct ShapeMasks {
   std::uint8_t edges = 0;            ///< edges internal to their body
   std::uint8_t closed_vertices = 0;  ///< vertices where the outline allows only other axes

@@ -76,7 +76,9 @@ struct InternalEdges {
   /// not directions the body's outline allows.
   std::uint8_t edges = 0;
   /// Closed vertices: no edge axis of the other triangle whose deepest vertex is one of these is
-  /// allowed. A vertex is closed where the body's outline is flat or reflex and one of its own
+  /// allowed, unless an edge of this triangle at that vertex that is not internal lies flat on
+  /// the axis's face (turned from it by at most 1e-3 rad): the outline face then realises the
+  /// axis as well. A vertex is closed where the body's outline is flat or reflex and one of its own
   /// triangle's edges there is internal (that triangle's other edge normal, an axis of its own, is
   /// the only direction the outline allows there), or where both of its edges in its triangle are
   /// internal (inside the body, or on the outline between other triangles' edges, whose own pairs
@@ -121,12 +123,12 @@ struct Query {
   /// answered as without masks. Otherwise, when the masks allow the pair's least axis and its
   /// reference face, the answer is the plain one; when not, `depth`, `normal` and the reference
   /// face come from the least *usable* axis: allowed (its edge not internal, its deepest vertex
-  /// not closed) and reached (the other triangle touches that edge, within `margin` and the
-  /// touching band): the exact depth of the pair along the directions the outline allows there.
-  /// No usable axis: the status, `depth` and `normal` are the unrestricted answer and the
-  /// manifold is empty (another pair of the two bodies carries the contact). One triangle reaching
-  /// no edge of the other (held whole by it): allowed axes suffice. Empty (the default): every
-  /// axis allowed, the plain answer, bit for bit.
+  /// not closed but for an outline edge lying flat there: see `InternalEdges`) and reached (the
+  /// other triangle touches that edge, within `margin` and the touching band): the exact depth of
+  /// the pair along the directions the outline allows there. No usable axis: the status, `depth`
+  /// and `normal` are the unrestricted answer and the manifold is empty (another pair of the two
+  /// bodies carries the contact). One triangle reaching no edge of the other (held whole by it):
+  /// allowed axes suffice. Empty (the default): every axis allowed, the plain answer, bit for bit.
   InternalEdges internal_edges{};
   /// Level::Manifold only: false leaves the Contact level's fields (`witness_a`, `witness_b`,
   /// `feature_a`, `feature_b`) at their defaults, for a caller that wants the manifold as Box2D's
