@@ -376,6 +376,12 @@ LockstepRecording record_sides(std::string name, const std::array<scenes::Runner
     out.frames[side] = record_steps(*w.world, runners[side], steps, index[side]);
   }
   // The layout: A's own bodies and fixtures, B's, then the shared ones (A's and B's alike).
+  // `place(own, side, i)`: where side `side`'s item `i` goes, `own` counting each side's own items.
+  const auto place = [](const std::array<int, 2>& own, int side, int i) {
+    return i < own[side] ? (side == 0 ? 0 : own[0]) + i : own[0] + own[1] + i - own[side];
+  };
+  const auto body_of = [&](int side, int b) { return place(own_bodies, side, b); };
+  const auto fixture_of_side = [&](int side, int f) { return place(own_fixtures, side, f); };
   const auto shared_bodies = [&](int side) {
     return static_cast<int>(index[side].roles.size()) - own_bodies[side];
   };
@@ -385,19 +391,8 @@ LockstepRecording record_sides(std::string name, const std::array<scenes::Runner
   if (shared_bodies(0) != shared_bodies(1) || shared_fixtures(0) != shared_fixtures(1)) {
     throw std::logic_error("record_sides: the two sides' moving bodies differ");
   }
-  const std::array<int, 2> body_offset = {0, own_bodies[0]};
-  const std::array<int, 2> fixture_offset = {0, own_fixtures[0]};
-  const int shared_body_at = own_bodies[0] + own_bodies[1];
-  const int shared_fixture_at = own_fixtures[0] + own_fixtures[1];
-  const auto body_of = [&](int side, int b) {
-    return b < own_bodies[side] ? body_offset[side] + b : shared_body_at + b - own_bodies[side];
-  };
-  const auto fixture_of_side = [&](int side, int f) {
-    return f < own_fixtures[side] ? fixture_offset[side] + f
-                                  : shared_fixture_at + f - own_fixtures[side];
-  };
-  out.bodies.resize(static_cast<std::size_t>(shared_body_at + shared_bodies(0)));
-  out.fixtures.resize(static_cast<std::size_t>(shared_fixture_at + shared_fixtures(0)));
+  out.bodies.resize(index[0].roles.size() + static_cast<std::size_t>(own_bodies[1]));
+  out.fixtures.resize(index[0].fixtures.size() + static_cast<std::size_t>(own_fixtures[1]));
   for (int side = 0; side < 2; ++side) {
     for (std::size_t b = 0; b < index[side].roles.size(); ++b) {
       out.bodies[body_of(side, static_cast<int>(b))] = index[side].roles[b];
@@ -412,8 +407,8 @@ LockstepRecording record_sides(std::string name, const std::array<scenes::Runner
   }
   // Each side's frames in the layout; the other side's own bodies at their first recorded poses
   // (their fixtures are not drawn on this side).
-  std::array<std::vector<BodyPose>, 2> first_poses = {out.frames[0][0].poses,
-                                                      out.frames[1][0].poses};
+  const std::array<std::vector<BodyPose>, 2> first_poses = {out.frames[0][0].poses,
+                                                            out.frames[1][0].poses};
   for (int side = 0; side < 2; ++side) {
     const int other = 1 - side;
     for (ViewFrame& frame : out.frames[side]) {

@@ -179,7 +179,7 @@ class GroundsSection : public CompareSection {
   };
 
   static std::string page_file(GroundLevel level) {
-    return "view_" + experiments::ground_recording_name(level) + ".html";
+    return viewer_page_file(experiments::ground_recording_name(level));
   }
 
   void tables(std::ostream& out) const {

@@ -25,8 +25,6 @@ struct ViewerPage {
   std::array<int, 2> touching{}, agreeing{}, marked{};  ///< at the last step, own then dyop
 };
 
-std::string page_file(const std::string& scene) { return "view_" + scene + ".html"; }
-
 class ViewerSection : public CompareSection {
  public:
   const char* section_name() const override { return "viewer"; }
@@ -64,14 +62,14 @@ class ViewerSection : public CompareSection {
   void write_tables(std::ostream& out) const override {
     out << "\nViewer pages (Box2D's own contact against dyop, step by step; open in a browser):\n";
     for (const ViewerPage& p : pages_) {
-      out << "  " << out_dir_ << '/' << page_file(p.scene) << "  (" << p.steps << " steps, "
+      out << "  " << out_dir_ << '/' << viewer_page_file(p.scene) << "  (" << p.steps << " steps, "
           << fmt("%.1f", double(p.html.size()) / 1e6) << " MB)\n";
     }
   }
 
   void write_files(ReportDirectory& dir, Charts&) const override {
     for (const ViewerPage& p : pages_) {
-      dir.write(page_file(p.scene), [&](std::ostream& o) { o << p.html; });
+      dir.write(viewer_page_file(p.scene), [&](std::ostream& o) { o << p.html; });
     }
   }
 
@@ -89,7 +87,7 @@ class ViewerSection : public CompareSection {
       << "| scene | steps | page | contacts own / dyop | agreeing | dyop's marked |\n"
       << "|---|--:|--:|--:|--:|--:|\n";
     for (const ViewerPage& p : pages_) {
-      o << "| [" << p.scene << "](" << page_file(p.scene) << ") | " << p.steps << " | "
+      o << "| [" << p.scene << "](" << viewer_page_file(p.scene) << ") | " << p.steps << " | "
         << fmt("%.2f", double(p.html.size()) / 1e6) << " MB | " << p.touching[0] << " / "
         << p.touching[1] << " | " << p.agreeing[0] << " | " << p.marked[1] << " |\n";
     }

@@ -338,6 +338,8 @@ Json viewer_summary(const LockstepRecording& r) {
   return s;
 }
 
+std::string viewer_page_file(const std::string& name) { return "view_" + name + ".html"; }
+
 void write_viewer_page(const LockstepRecording& recording, std::ostream& out) {
   std::string json = page_data(recording).dump();
   // Inside a <script> element nothing may close it.

@@ -25,6 +25,7 @@
 /// script error; empty when none) and `#status` ("ready" once the first frame is drawn).
 
 #include <iosfwd>
+#include <string>
 
 #include "experiments/lockstep_recording.hpp"
 #include "report/json.hpp"
@@ -41,6 +42,10 @@ inline constexpr double position_quantum = 1e-4;    ///< m, poses
 inline constexpr double local_quantum = 1e-4;       ///< m, manifold points in a body's frame
 inline constexpr double angle_quantum = 1e-4;       ///< rad, poses and normals
 inline constexpr double separation_quantum = 1e-4;  ///< m
+
+/// The file name of `dyop compare`'s viewer page of a recording called `name`:
+/// "view_<name>.html".
+std::string viewer_page_file(const std::string& name);
 
 /// Writes the page for `recording`.
 void write_viewer_page(const experiments::LockstepRecording& recording, std::ostream& out);

@@ -148,27 +148,26 @@ inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<floa
       static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(d[2], _mm_min_ps(d[1], d[0])))) & 7u;
   const unsigned deep_at[3] = {~(one | two) & 7u, one & ~two, two};
   unsigned realised_inside = 0;
-  if (other_closed != 0) {
-    const float sine = dyop::detail::flat_face_sine<float>();
-    // flat_at[w]: the lanes where the edge from w to its next or its previous vertex is an
-    // outline edge lying flat, seen from w.
-    unsigned flat_at[3] = {0, 0, 0};
-    for (int w = 0; w < 3; ++w) {
-      const int after = next3(w);
-      const int before = next3(after);
-      const int edges[2] = {w, before};
-      const int ends[2] = {after, before};
-      for (int side = 0; side < 2; ++side) {
-        if (((other_internal >> edges[side]) & 1u) != 0) continue;
-        const int end = ends[side];
-        const float bound = sine * sine * (other[end] - other[w]).squaredNorm();
-        const __m128 rise = _mm_sub_ps(d[end], d[w]);
-        flat_at[w] |= static_cast<unsigned>(_mm_movemask_ps(
-                          _mm_cmple_ps(_mm_mul_ps(rise, rise), _mm_set1_ps(bound)))) &
-                      7u;
-      }
-      if (((other_closed >> w) & 1u) != 0) realised_inside |= deep_at[w] & ~flat_at[w];
+  const float sine = dyop::detail::flat_face_sine<float>();
+  for (int w = 0; w < 3; ++w) {
+    if (((other_closed >> w) & 1u) == 0) continue;
+    // The lanes where the edge from w to its next or its previous vertex is an outline edge
+    // lying flat, seen from w.
+    unsigned flat = 0;
+    const int after = next3(w);
+    const int before = next3(after);
+    const int edges[2] = {w, before};
+    const int ends[2] = {after, before};
+    for (int side = 0; side < 2; ++side) {
+      if (((other_internal >> edges[side]) & 1u) != 0) continue;
+      const int end = ends[side];
+      const float bound = sine * sine * (other[end] - other[w]).squaredNorm();
+      const __m128 rise = _mm_sub_ps(d[end], d[w]);
+      flat |= static_cast<unsigned>(
+                  _mm_movemask_ps(_mm_cmple_ps(_mm_mul_ps(rise, rise), _mm_set1_ps(bound)))) &
+              7u;
     }
+    realised_inside |= deep_at[w] & ~flat;
   }
   EdgeBits out;
   out.allowed = ~(internal | realised_inside) & 7u;
