@@ -29,9 +29,9 @@ bool masks_put_off(const Setting& setting, const PairPose& pose, FoundMasks& mas
       // Since the last answer afresh, which had not seen the count move or followed the motion
       // already: every evaluation in between kept its manifold (within the recycling distance of
       // that pose) or was a skip (then the motion is infinite).
-      masks.motion +=
-          recycling ? recycling->motion(pose.b_in_a, pose.centroid_b, pose.lever(), setting.epoch)
-                    : HUGE_VALF;
+      masks.motion += recycling ? recycling->motion(pose.b_in_a.q, pose.centroid_b_in_a,
+                                                    pose.lever(), setting.epoch)
+                                : HUGE_VALF;
       if (!masks_hold(masks, setting.config.recycle_distance)) {
         masks.motion = FoundMasks::not_found;
       }
@@ -45,8 +45,11 @@ bool masks_put_off(const Setting& setting, const PairPose& pose, FoundMasks& mas
 void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape& shape_a,
                       const b2Transform& xf_a, const b2PolygonShape& shape_b,
                       const b2Transform& xf_b, ContactMemory* memory, const Config& config) {
-  ContactMemory cold;
-  ContactMemory& m = memory ? *memory : cold;
+  if (!memory) {
+    ContactMemory cold;
+    return collide_polygons(manifold, backend, shape_a, xf_a, shape_b, xf_b, &cold, config);
+  }
+  ContactMemory& m = *memory;
   const detail::Setting setting(backend, config, 0);
   if (m.shapes == ContactMemory::Shapes::Unchecked) detail::look_at_shapes(shape_a, shape_b, m);
   if (detail::family_of(m.shapes) == detail::Family::Triangles) {
@@ -61,8 +64,12 @@ void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
                                 const b2PolygonShape& polygon, const b2Transform& xf_a,
                                 const b2CircleShape& circle, const b2Transform& xf_b,
                                 ContactMemory* memory, const Config& config) {
-  ContactMemory cold;
-  ContactMemory& m = memory ? *memory : cold;
+  if (!memory) {
+    ContactMemory cold;
+    return collide_polygon_and_circle(manifold, backend, polygon, xf_a, circle, xf_b, &cold,
+                                      config);
+  }
+  ContactMemory& m = *memory;
   if (m.shapes == ContactMemory::Shapes::Unchecked) detail::look_at_shapes(polygon, circle, m);
   detail::skip_or_answer(manifold, detail::Setting(backend, config, 0),
                          detail::PolygonCirclePair(polygon, xf_a, circle, xf_b), m);

@@ -42,9 +42,9 @@ bool masks_put_off(const Setting& setting, const PairPose& pose, FoundMasks& mas
 
 // Where `pair` is now (`memory`: its bounding radii).
 template <class Pair>
-PairPose pose_of(const Pair& pair, const ContactMemory& memory) {
-  const float margin = pair.margin();
-  return {b2MulT(pair.xf_a, pair.xf_b), pair.centroid_b(), margin, memory.radius_sum};
+[[gnu::always_inline]] inline PairPose pose_of(const Pair& pair, const ContactMemory& memory) {
+  const b2Transform b_in_a = b2MulT(pair.xf_a, pair.xf_b);
+  return {b_in_a, b2Mul(b_in_a, pair.centroid_b()), pair.margin(), memory.radius_sum};
 }
 
 // The manifold in `manifold` may stay (`Config::recycle_distance`, or the measurement floor's
@@ -57,7 +57,8 @@ inline bool keeps_manifold(const Setting& setting, bool rule, const PairPose& po
                            const ManifoldRecycling& recycling, const TriangleContact* contact,
                            FoundMasks* masks) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
-  if (!recycling.keeps(pose.b_in_a, pose.centroid_b, pose.lever(), setting.epoch)) return false;
+  if (!recycling.keeps(pose.b_in_a.q, pose.centroid_b_in_a, pose.lever(), setting.epoch))
+    return false;
   if (!rule || !contact) return true;
   if (masks->fixed()) return true;  // changed only by a refresh, which recomputes
   if (masks->stamp != contact->internal_edges_stamp(setting.epoch)) return false;
@@ -96,8 +97,7 @@ template <class Pair>
                                                           const ContactMemory& memory) {
   if (setting.config.bounds_early_out) {
     const float reach_sum = pose.radius_sum + reach(pose.margin);
-    const b2Vec2 centroid_b = b2Mul(pose.b_in_a, pose.centroid_b);
-    if ((centroid_b - pair.a.m_centroid).LengthSquared() > reach_sum * reach_sum) {
+    if ((pose.centroid_b_in_a - pair.a.m_centroid).LengthSquared() > reach_sum * reach_sum) {
       return Skip::Bounds;
     }
   }
@@ -120,7 +120,7 @@ template <class Pair>
   manifold->pointCount = 0;
   if (recycling) {
     if (setting.never_recompute && setting.method) {
-      recycling->remember(pose.b_in_a, pose.centroid_b, 1, setting.epoch);
+      recycling->remember(pose.b_in_a.q, pose.centroid_b_in_a, 1, setting.epoch);
     } else {
       recycling->lose_pose();
     }
@@ -181,7 +181,7 @@ void remember(const Setting& setting, const Pair& pair, const PairPose& pose,
     slack = manifold.pointCount > 0 ? distance
                                     : std::max(0.0f, std::min(distance, pair.gap(r, pose, memory)));
   }
-  recycling.remember(pose.b_in_a, pose.centroid_b, slack, setting.epoch);
+  recycling.remember(pose.b_in_a.q, pose.centroid_b_in_a, slack, setting.epoch);
 }
 
 // Answer, once nothing was kept or skipped: the solver's answer (`solve_with_masks`), its pose

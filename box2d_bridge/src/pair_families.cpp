@@ -180,7 +180,7 @@ void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
 
 void PolygonCirclePair::write(b2Manifold* manifold, const Manifold<float>& m,
                               const PairPose& pose) const {
-  write_circle_manifold(manifold, m, a, b, b2Mul(pose.b_in_a, b.m_p));
+  write_circle_manifold(manifold, m, a, b, pose.centroid_b_in_a);
 }
 
 }  // namespace dyop::box2d::detail

@@ -53,10 +53,10 @@ float bounding_radius(const b2PolygonShape& shape);
 
 // Where a pair is, for keeping, skipping and remembering its manifold.
 struct PairPose {
-  b2Transform b_in_a;  // B's body frame given in A's
-  b2Vec2 centroid_b;   // B's centroid in its body frame (a circle's centre)
-  float margin;        // the skins (metres): manifold points are kept up to this far apart
-  float radius_sum;    // the shapes' bounding radii summed (`ContactMemory::radius_sum`, metres)
+  b2Transform b_in_a;      // B's body frame given in A's
+  b2Vec2 centroid_b_in_a;  // B's centroid (a circle's centre) in A's body frame
+  float margin;            // the skins (metres): manifold points are kept up to this far apart
+  float radius_sum;        // the shapes' bounding radii summed (`ContactMemory::radius_sum`, m)
 
   // The motion bound's lever (`recycle_lever`).
   float lever() const { return recycle_lever(radius_sum, margin); }
@@ -246,7 +246,7 @@ struct PolygonCirclePair : ExactPair {
   }
   // The circle beyond the line of A's face `face`: apart at least that far.
   float face_separation(int face, const PairPose& pose) const {
-    return b2Dot(a.m_normals[face], b2Mul(pose.b_in_a, b.m_p) - a.m_vertices[face]) - b.m_radius;
+    return b2Dot(a.m_normals[face], pose.centroid_b_in_a - a.m_vertices[face]) - b.m_radius;
   }
   static bool fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
     return fixed_masks_of(contact, false, memory);
@@ -273,16 +273,48 @@ struct PolygonCirclePair : ExactPair {
   }
 };
 
+// The solver with both vertex counts known to the compiler (`Counted`).
+template <int NA, int NB>
+[[gnu::always_inline]] inline Result<float> solve_counted(const b2PolygonShape& a,
+                                                          const b2PolygonShape& b,
+                                                          const b2Transform& b_in_a,
+                                                          const ConvexQuery<float>& q) {
+  return dyop::detail::collide_polygons(Counted<InPlace, NA>(a), Counted<Placed, NB>(b, b_in_a), q);
+}
+
 inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
                                         ContactMemory&) const {
-  return dyop::detail::collide_polygons(InPlace(a), Placed(b, pose.b_in_a), q);
+  // The commonest bodies: triangles, `SetAsBox` boxes, hexagons.
+  switch (a.m_count << 4 | b.m_count) {
+    case 0x34:
+      return solve_counted<3, 4>(a, b, pose.b_in_a, q);
+    case 0x36:
+      return solve_counted<3, 6>(a, b, pose.b_in_a, q);
+    case 0x43:
+      return solve_counted<4, 3>(a, b, pose.b_in_a, q);
+    case 0x44:
+      return solve_counted<4, 4>(a, b, pose.b_in_a, q);
+    case 0x46:
+      return solve_counted<4, 6>(a, b, pose.b_in_a, q);
+    case 0x63:
+      return solve_counted<6, 3>(a, b, pose.b_in_a, q);
+    case 0x64:
+      return solve_counted<6, 4>(a, b, pose.b_in_a, q);
+    case 0x66:
+      return solve_counted<6, 6>(a, b, pose.b_in_a, q);
+    default:
+      return dyop::detail::collide_polygons(InPlace(a), Placed(b, pose.b_in_a), q);
+  }
 }
 
 inline Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, const PairPose& pose,
                                               ContactMemory&) const {
-  const b2Vec2 center = b2Mul(pose.b_in_a, b.m_p);
-  return dyop::detail::collide_polygon_circle(InPlace(a),
-                                              Circle<float>{{center.x, center.y}, b.m_radius}, q);
+  const b2Vec2& center = pose.centroid_b_in_a;
+  const Circle<float> circle{{center.x, center.y}, b.m_radius};
+  using dyop::detail::collide_polygon_circle;
+  if (a.m_count == 3) return collide_polygon_circle(Counted<InPlace, 3>(a), circle, q);
+  if (a.m_count == 4) return collide_polygon_circle(Counted<InPlace, 4>(a), circle, q);
+  return collide_polygon_circle(InPlace(a), circle, q);
 }
 
 }  // namespace dyop::box2d::detail

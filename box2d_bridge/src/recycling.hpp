@@ -55,42 +55,42 @@ struct ManifoldRecycling {
   // is unknown.
   void lose_pose() { slack = -1; }
 
-  // Remembers the pose `b_in_a` (B's centroid in its body frame: `centroid_b`) of a manifold just
-  // computed under install `epoch`, which may be kept while it moves less than `slack` (≤ 0:
-  // never). The centroid is kept placed, not the translation: the test then places it once.
-  void remember(const b2Transform& b_in_a, const b2Vec2& centroid_b, float keep_within,
+  // Remembers the pose (`turn`: B's body frame's rotation in A's; `centroid_in_a`: B's centroid
+  // in A's frame) of a manifold just computed under install `epoch`, which may be kept while it
+  // moves less than `slack` (≤ 0: never).
+  void remember(const b2Rot& turn, const b2Vec2& centroid_in_a, float keep_within,
                 std::uint8_t install_epoch) {
-    q = b_in_a.q;
-    centroid = b2Mul(b_in_a, centroid_b);
+    q = turn;
+    centroid = centroid_in_a;
     slack = keep_within;
     epoch = install_epoch;
   }
 
-  // True when the manifold computed at the remembered pose may be kept at `b_in_a`: computed
-  // under this install, the turn within `recycle_cosine`, and the motion (see the file's head)
-  // below the slack. `centroid_b`: B's centroid in its body frame, as remembered; `lever`: see the
+  // True when the manifold computed at the remembered pose may be kept at the pose now (`turn`,
+  // `centroid_in_a`, as `remember` takes them): computed under this install, the turn within
+  // `recycle_cosine`, and the motion (see the file's head) below the slack. `lever`: see the
   // file's head.
-  bool keeps(const b2Transform& b_in_a, const b2Vec2& centroid_b, float lever,
+  bool keeps(const b2Rot& turn, const b2Vec2& centroid_in_a, float lever,
              std::uint8_t install_epoch) const {
     if (!(slack > 0) || epoch != install_epoch) return false;
-    const float cos_turn = q.c * b_in_a.q.c + q.s * b_in_a.q.s;
+    const float cos_turn = q.c * turn.c + q.s * turn.s;
     if (!(cos_turn >= recycle_cosine)) return false;
-    const float sin_turn = q.c * b_in_a.q.s - q.s * b_in_a.q.c;
+    const float sin_turn = q.c * turn.s - q.s * turn.c;
     const float room = slack - std::abs(sin_turn) * lever;
     if (!(room > 0)) return false;
-    return (b2Mul(b_in_a, centroid_b) - centroid).LengthSquared() < room * room;
+    return (centroid_in_a - centroid).LengthSquared() < room * room;
   }
 
-  // How far the pair has moved from the remembered pose to `b_in_a` at most (the motion of the
-  // file's head), or infinity when no pose was remembered under install `install_epoch`, an
-  // evaluation since was skipped, or the turn is beyond `recycle_cosine` (where the lever no
-  // longer bounds it).
-  float motion(const b2Transform& b_in_a, const b2Vec2& centroid_b, float lever,
+  // How far the pair has moved from the remembered pose to the pose now (`turn`,
+  // `centroid_in_a`) at most (the motion of the file's head), or infinity when no pose was
+  // remembered under install `install_epoch`, an evaluation since was skipped, or the turn is
+  // beyond `recycle_cosine` (where the lever no longer bounds it).
+  float motion(const b2Rot& turn, const b2Vec2& centroid_in_a, float lever,
                std::uint8_t install_epoch) const {
-    const float cos_turn = q.c * b_in_a.q.c + q.s * b_in_a.q.s;
+    const float cos_turn = q.c * turn.c + q.s * turn.s;
     if (slack < 0 || epoch != install_epoch || !(cos_turn >= recycle_cosine)) return HUGE_VALF;
-    const float sin_turn = q.c * b_in_a.q.s - q.s * b_in_a.q.c;
-    return (b2Mul(b_in_a, centroid_b) - centroid).Length() + std::abs(sin_turn) * lever;
+    const float sin_turn = q.c * turn.s - q.s * turn.c;
+    return (centroid_in_a - centroid).Length() + std::abs(sin_turn) * lever;
   }
 };
 

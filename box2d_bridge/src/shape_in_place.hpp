@@ -54,4 +54,14 @@ class Placed : public InPlace {
   const b2Transform& xf_;
 };
 
+// `P` (`InPlace` or `Placed`) holding a shape of exactly `N` vertices, known to the compiler: the
+// solver's loops over vertices and axes then unroll (docs/measurements.md, "Everyday shapes").
+template <class P, int N>
+class Counted : public P {
+ public:
+  using P::P;
+  static constexpr int count() { return N; }
+  static constexpr int next(int i) { return i + 1 < N ? i + 1 : 0; }
+};
+
 }  // namespace dyop::box2d::detail
