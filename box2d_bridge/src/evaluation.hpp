@@ -57,8 +57,9 @@ inline bool keeps_manifold(const Setting& setting, bool rule, const PairPose& po
                            const ManifoldRecycling& recycling, const TriangleContact* contact,
                            FoundMasks* masks) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
-  if (!recycling.keeps(pose.b_in_a.q, pose.centroid_b_in_a, pose.lever(), setting.epoch))
+  if (!recycling.keeps(pose.b_in_a.q, pose.centroid_b_in_a, pose.lever(), setting.epoch)) {
     return false;
+  }
   if (!rule || !contact) return true;
   if (masks->fixed()) return true;  // changed only by a refresh, which recomputes
   if (masks->stamp != contact->internal_edges_stamp(setting.epoch)) return false;
