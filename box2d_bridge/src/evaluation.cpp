@@ -40,6 +40,13 @@ bool masks_put_off(const Setting& setting, const PairPose& pose, FoundMasks& mas
   return !masks.found();
 }
 
+template void answer<PolygonPair>(b2Manifold*, const Setting&, const PolygonPair&, const PairPose&,
+                                  ContactMemory&, const TriangleContact*, FoundMasks*,
+                                  ManifoldRecycling*);
+template void answer<PolygonCirclePair>(b2Manifold*, const Setting&, const PolygonCirclePair&,
+                                        const PairPose&, ContactMemory&, const TriangleContact*,
+                                        FoundMasks*, ManifoldRecycling*);
+
 }  // namespace detail
 
 void collide_polygons(b2Manifold* manifold, Backend backend, const b2PolygonShape& shape_a,

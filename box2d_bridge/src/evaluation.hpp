@@ -215,6 +215,17 @@ template <class Pair>
   if (manifold->pointCount > 0) count.manifolds.add();
 }
 
+// The answers of the families beyond two triangles are compiled once, in evaluation.cpp, for the
+// world's contact and the entry points alike: their solvers are instantiated for several vertex
+// counts each (`PolygonPair::solve`), which costs seconds of build per translation unit.
+extern template void answer<PolygonPair>(b2Manifold*, const Setting&, const PolygonPair&,
+                                         const PairPose&, ContactMemory&, const TriangleContact*,
+                                         FoundMasks*, ManifoldRecycling*);
+extern template void answer<PolygonCirclePair>(b2Manifold*, const Setting&,
+                                               const PolygonCirclePair&, const PairPose&,
+                                               ContactMemory&, const TriangleContact*, FoundMasks*,
+                                               ManifoldRecycling*);
+
 // An evaluation, once nothing was kept (or with nothing to keep): skip, else answer; uninstalled,
 // Box2D's own answer, uncounted, exactly as Box2D's own contact. `memory` is the pair's state, its
 // shapes looked at (`look_at_shapes`), updated; `contact` the world's contact it belongs to, if
