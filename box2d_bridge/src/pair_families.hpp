@@ -311,10 +311,7 @@ inline Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, co
                                               ContactMemory&) const {
   const b2Vec2& center = pose.centroid_b_in_a;
   const Circle<float> circle{{center.x, center.y}, b.m_radius};
-  using dyop::detail::collide_polygon_circle;
-  if (a.m_count == 3) return collide_polygon_circle(Counted<InPlace, 3>(a), circle, q);
-  if (a.m_count == 4) return collide_polygon_circle(Counted<InPlace, 4>(a), circle, q);
-  return collide_polygon_circle(InPlace(a), circle, q);
+  return dyop::detail::collide_polygon_circle(InPlace(a), circle, q);
 }
 
 }  // namespace dyop::box2d::detail
