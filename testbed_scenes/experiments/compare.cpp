@@ -65,17 +65,23 @@ int compare_steps(const CompareOptions& options, const scenes::SceneInfo& s) {
 
 int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 
-std::vector<box2d::Backend> compare_backends(bool quick) {
-  if (!quick) return {std::begin(box2d::all_backends), std::end(box2d::all_backends)};
-  return {box2d::Backend::Dyop, box2d::Backend::Box2D};
+std::vector<box2d::Backend> compare_backends(const CompareOptions& options) {
+  std::vector<box2d::Backend> out;
+  for (box2d::Backend b : box2d::all_backends) {
+    const bool named = std::find(options.backends.begin(), options.backends.end(), b) !=
+                       options.backends.end();
+    const bool by_default = !options.quick || b == box2d::Backend::Dyop || b == box2d::Backend::Box2D;
+    if (options.backends.empty() ? by_default : named) out.push_back(b);
+  }
+  return out;
 }
 
 bool left_out_of_quick_sections(const std::string& name) {
   return name == "rain-tall" || name == "tumbler";
 }
 
-std::vector<box2d::Backend> in_world_backends(bool quick) {
-  if (!quick) return compare_backends(false);
+std::vector<box2d::Backend> in_world_backends(const CompareOptions& options) {
+  if (!options.backends.empty() || !options.quick) return compare_backends(options);
   return {box2d::Backend::Dyop};
 }
 
@@ -95,7 +101,7 @@ CompareRun run_compare(const CompareOptions& options, std::ostream& progress,
   CompareRun run;
   run.options = options;
   const std::vector<const scenes::SceneInfo*> scenes = selected_scenes(options);
-  const std::vector<box2d::Backend> backends = compare_backends(options.quick);
+  const std::vector<box2d::Backend> backends = compare_backends(options);
   const int total = static_cast<int>(scenes.size() * backends.size());
   int done = 0;
   for (const scenes::SceneInfo* s : scenes) {

@@ -36,20 +36,24 @@ struct CompareOptions {
   /// What the Box2D scenes may skip (`--skip`): the main table's runs, and the "on" side of the
   /// skip section.
   box2d::Config skips;
+  /// The backends of the main table and the in-world section (`--backend`), run in
+  /// `box2d::all_backends`' order; empty: `compare_backends`' and `in_world_backends`' defaults.
+  std::vector<box2d::Backend> backends;
 };
 
 /// Scene `s`'s step count in a comparison: `--steps`, or the catalogue's full count, or with
 /// `--quick` its `compare_quick_steps`. The main table and every section run these.
 int compare_steps(const CompareOptions& options, const scenes::SceneInfo& s);
 
-/// The backends of the main table: every backend in a full run; `--quick` (the main command's
-/// overview, kept to seconds) keeps `dyop`, what a user installs, and `box2d` (Box2D's own
-/// `b2CollidePolygons` through the plug-in: the yardstick of the summary's depth error).
-std::vector<box2d::Backend> compare_backends(bool quick);
+/// The backends of the main table: those `options.backends` names; else every backend in a full
+/// run, and with `--quick` (the main command's overview, kept to seconds) `dyop`, what a user
+/// installs, and `box2d` (Box2D's own `b2CollidePolygons` through the plug-in: the yardstick of
+/// the summary's depth error).
+std::vector<box2d::Backend> compare_backends(const CompareOptions& options);
 
-/// The backends of the in-world section: every backend in a full run; `--quick` keeps `dyop`
-/// (what the summary's wall times are).
-std::vector<box2d::Backend> in_world_backends(bool quick);
+/// The backends of the in-world section: those `options.backends` names; else every backend in
+/// a full run, and with `--quick` `dyop` (what the summary's wall times are).
+std::vector<box2d::Backend> in_world_backends(const CompareOptions& options);
 
 /// True when `--quick`'s in-world and viewer sections leave scene `name` out: the two longest
 /// (`rain-tall`, `tumbler`), whose figures the main table has; the full run has every scene.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dyop/box2d.hpp"
 #include "program/commands.hpp"
 #include "report/compare_report.hpp"
 #include "report/compare_section.hpp"
@@ -80,6 +81,14 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--section", options->sections,
                   "Only these sections after the main table (repeatable; default: all)")
       ->check(CLI::IsMember(report::compare_section_names()));
+  auto backends = std::make_shared<std::vector<std::string>>();
+  std::vector<std::string> backend_names;
+  for (box2d::Backend b : box2d::all_backends) backend_names.push_back(box2d::name(b));
+  cmd->add_option("--backend", *backends,
+                  "Only these backends in the main table and the in-world section (repeatable; "
+                  "default: every backend, with --quick dyop and box2d, and dyop in the in-world "
+                  "section)")
+      ->check(CLI::IsMember(backend_names));
   auto skip = std::make_shared<std::string>("all");
   const std::string skip_help =
       scenes::skip_help() +
@@ -88,8 +97,10 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->check(CLI::Validator([](std::string& text) { return scenes::parse_skips(text).error; },
                              "all|none|LIST"));
-  cmd->callback([options, steps, steps_option, skip, &exit_code] {
+  cmd->callback([options, steps, steps_option, backends, skip, &exit_code] {
     if (steps_option->count() > 0) options->steps = *steps;
+    options->backends.clear();
+    for (const std::string& b : *backends) options->backends.push_back(*box2d::parse_backend(b));
     options->skips = scenes::parse_skips(*skip).config;
     exit_code = run_compare_command(*options, std::cout, std::cerr);
   });

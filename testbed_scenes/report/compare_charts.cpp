@@ -27,7 +27,7 @@ class MainCharts {
       : files_(files),
         dir_(files.dir),
         run_(files.comparison.main),
-        backends_(experiments::compare_backends(run_.options.quick)) {}
+        backends_(experiments::compare_backends(run_.options)) {}
 
   void chart(const std::string& name, const std::string& terminal, const std::string& body) {
     files_.charts.draw(dir_, name, terminal, body);

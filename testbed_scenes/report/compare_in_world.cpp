@@ -59,7 +59,7 @@ void InWorldSection::run(const SectionContext& c) {
     if (std::string(s->name) == "paper") continue;  // no Box2D world
     if (c.options.quick && experiments::left_out_of_quick_sections(s->name)) continue;
     const int steps = c.steps(*s);
-    for (box2d::Backend b : experiments::in_world_backends(c.options.quick)) {
+    for (box2d::Backend b : experiments::in_world_backends(c.options)) {
       const double start = c.elapsed();
       rows_.push_back(experiments::measure_in_world(s->name, b, reps, [&](const scenes::Runner& r) {
         return scenes::run_scene(s->name, r, steps, c.options.seed, c.options.skips);

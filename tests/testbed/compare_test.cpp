@@ -38,7 +38,7 @@ TEST(Compare, TinyRunWritesTheReportTheCsvAndTheCharts) {
   std::ostringstream out, err;
   ASSERT_EQ(cli::run_compare_command(options, out, err), 0) << err.str();
 
-  const int runs = static_cast<int>(scene_catalog().size() * compare_backends(true).size());
+  const int runs = static_cast<int>(scene_catalog().size() * compare_backends(options).size());
   EXPECT_NE(err.str().find("[" + std::to_string(runs) + "/" + std::to_string(runs) + "]"),
             std::string::npos)
       << "one progress line per scene and backend";

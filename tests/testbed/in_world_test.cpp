@@ -75,7 +75,7 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
   const report::InWorldSection* section = comparison.section<report::InWorldSection>();
   ASSERT_NE(section, nullptr);
   const std::vector<InWorldRatio>& rows = section->rows();
-  const std::vector<box2d::Backend> backends = in_world_backends(true);
+  const std::vector<box2d::Backend> backends = in_world_backends(options);
   ASSERT_EQ(rows.size(), 2 * backends.size()) << "no row for paper (no Box2D world)";
   for (const InWorldRatio& r : rows) {
     EXPECT_TRUE(r.scene == "stack" || r.scene == "mixed") << r.scene;
@@ -89,6 +89,29 @@ TEST(InWorld, CompareHasOneRowPerBox2DSceneAndBackendInTableAndCsv) {
   const std::string text = csv.str();
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), static_cast<long>(rows.size()) + 1);
   EXPECT_EQ(text.rfind("scene,backend,steps,repetitions,narrowphase_ms_own", 0), 0u);
+}
+
+TEST(InWorld, NamedBackendsAloneRunInTheMainTableAndTheInWorldSectionInTheirOrder) {
+  CompareOptions options;
+  options.steps = 20;
+  options.scenes = {"stack"};
+  options.sections = {"in-world"};
+  options.backends = {box2d::Backend::Sat, box2d::Backend::Dyop, box2d::Backend::Sat};
+  const std::vector<box2d::Backend> expected = {box2d::Backend::Dyop, box2d::Backend::Sat};
+  EXPECT_EQ(compare_backends(options), expected) << "the plug-in's order, each once";
+  EXPECT_EQ(in_world_backends(options), expected);
+  std::ostringstream progress;
+  const report::Comparison comparison = report::run_comparison(options, progress);
+  ASSERT_EQ(comparison.main.rows.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(comparison.main.rows[i].runner, expected[i]);
+  }
+  const report::InWorldSection* section = comparison.section<report::InWorldSection>();
+  ASSERT_NE(section, nullptr);
+  ASSERT_EQ(section->rows().size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(section->rows()[i].backend, expected[i]);
+  }
 }
 
 // The recycling sweep of one scene: Box2D's own accuracy, one row per distance (times against

@@ -57,6 +57,20 @@ TEST(SceneCli, UnknownSceneOrRunnerIsAUsageError) {
   EXPECT_EQ(run("compare --scene nope").status, 1);
 }
 
+TEST(SceneCli, CompareRunsTheNamedBackendsAloneAndRefusesAnUnknownOne) {
+  const std::string dir = temp_dir("compare_backend").string();
+  const Outcome r = run("compare --scene stack --steps 20 --section in-world --backend sat --out " +
+                        dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("| stack | sat | 20 |"), std::string::npos) << r.out;
+  for (const char* other : {"| stack | dyop |", "| stack | box2d |", "| stack | epa |"}) {
+    EXPECT_EQ(r.out.find(other), std::string::npos) << other << " was not named";
+  }
+  const Outcome unknown = run("compare --scene stack --backend nope --out " + dir);
+  EXPECT_EQ(unknown.status, 1);
+  EXPECT_NE(unknown.err.find("nope"), std::string::npos) << unknown.err;
+}
+
 TEST(SceneCli, FallingSizesTheRainsOnly) {
   const Outcome rain = run("scene rain-tall --runner dyop --steps 2 --falling 60 --json -");
   ASSERT_EQ(rain.status, 0) << rain.err;
