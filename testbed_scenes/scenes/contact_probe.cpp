@@ -33,10 +33,31 @@ struct ProxyCollector {
   }
 };
 
+// The exact depths of pairs, and for a pair apart only the proof (`Apart::Gap`): no search for
+// its distance, which no tally reads (a depth of 0 either way).
+const Query<double> gap_only = [] {
+  Query<double> q;
+  q.apart = Apart::Gap;
+  return q;
+}();
+
+// A pair apart is handed to the tally by its gap when the gap exceeds the band by this factor.
+// Why: the gap is at most the distance, but the two are rounded apart (by units in the last
+// place): so far beyond the band, the distance is beyond it too.
+constexpr double gap_beyond_band = 2;
+
 // Collide skips a contact unless one of its bodies is awake and can move.
 bool active(const b2Body* body) { return body->IsAwake() && body->GetType() != b2_staticBody; }
 
 }  // namespace
+
+double exact_separation(const Triangle<double>& a, const Triangle<double>& b, double band) {
+  const Result<double> r = sat(a, b, gap_only);
+  if (r.status == Status::Separated && !(r.separation > gap_beyond_band * band)) {
+    return sat(a, b).separation;
+  }
+  return r.separation;
+}
 
 std::size_t ContactProbe::PairHash::operator()(
     const std::pair<const b2Fixture*, const b2Fixture*>& p) const {
@@ -108,10 +129,9 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     const TriangleOrError<double> xa = widen(ta.triangle);
     const TriangleOrError<double> xb = widen(tb.triangle);
     if (!xa.ok() || !xb.ok()) continue;  // valid in float, hence in double: never taken
-    const Result<double> exact = sat(xa.triangle, xb.triangle);
     const double band = static_cast<double>(touching_tolerance<float>()) *
                         std::max(xa.triangle.size(), xb.triangle.size());
-    errors.add(r.status, r.depth, exact.separation, band);
+    errors.add(r.status, r.depth, exact_separation(xa.triangle, xb.triangle, band), band);
   }
   // Contacts not met this pass are gone; forget their caches.
   for (auto it = caches_.begin(); it != caches_.end();) {
@@ -124,7 +144,7 @@ void ContactProbe::measure_penetration(const b2World& world, PenetrationTally& d
   for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
     if (!c->IsTouching()) continue;
     if (const std::optional<ExactPair> pair = exact_pair(*c))
-      depths.add(sat(pair->a, pair->b).depth);
+      depths.add(sat(pair->a, pair->b, gap_only).depth);
   }
 }
 

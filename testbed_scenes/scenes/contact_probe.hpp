@@ -24,6 +24,7 @@
 #include <utility>
 
 #include "dyop/box2d.hpp"
+#include "dyop/triangle.hpp"
 #include "scenes/metrics.hpp"
 
 class b2World;
@@ -56,6 +57,12 @@ class CollideRule {
  private:
   std::unordered_map<const b2Fixture*, int> proxy_;
 };
+
+/// The exact separation of triangles `a` and `b` (`sat` in double; metres) as an `ErrorTally`
+/// reads it: minus the depth of a pair in contact, the distance of a pair apart by up to twice
+/// `band` (the tally's touching band, metres), and for a pair apart farther a gap that proves it
+/// (above twice `band`, at most the distance but for rounding: the tally counts the same from it).
+double exact_separation(const Triangle<double>& a, const Triangle<double>& b, double band);
 
 class ContactProbe {
  public:

@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 #include <tuple>
 
+#include "dyop/sat.hpp"
+#include "scenes/contact_probe.hpp"
 #include "scenes/scene.hpp"
 #include "scenes/world_scene.hpp"
 
@@ -178,6 +181,38 @@ TEST(ContactProbe, CountsExactlyWhatCollideUpdates) {
               *after.plugin_evaluations - *before.plugin_evaluations)
         << "step " << i + 2;
   }
+}
+
+// The probe's exact reference skips the distance search of pairs apart well beyond the tally's
+// band: what it hands the tally is the full answer's separation wherever the tally reads its value
+// (in contact, or apart within the band), and beyond the band a value above the band and at most
+// the distance (but for rounding), from which the tally counts the same.
+TEST(ContactProbe, ExactSeparationIsTheFullAnswerWhereverTheTallyReadsIt) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int in_contact = 0, apart_within = 0, apart_beyond = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const auto a = Triangle<double>::make({u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)});
+    const Vec2<double> shift(1.5 * u(rng), 1.5 * u(rng));
+    const auto b = Triangle<double>::make(Vec2<double>(u(rng), u(rng)) + shift,
+                                          Vec2<double>(u(rng), u(rng)) + shift,
+                                          Vec2<double>(u(rng), u(rng)) + shift);
+    if (!a.ok() || !b.ok()) continue;
+    const double band = i % 2 == 0 ? 0.0 : 0.2;
+    const double full = sat(a.triangle, b.triangle).separation;
+    const double fast = exact_separation(a.triangle, b.triangle, band);
+    if (full <= band) {
+      EXPECT_EQ(fast, full) << "pair " << i;
+      (full <= 0 ? in_contact : apart_within) += 1;
+    } else {
+      EXPECT_GT(fast, band) << "pair " << i;
+      EXPECT_LE(fast, full * (1 + 1e-12)) << "pair " << i << ": a gap, at most the distance";
+      ++apart_beyond;
+    }
+  }
+  EXPECT_GT(in_contact, 100);
+  EXPECT_GT(apart_within, 100);
+  EXPECT_GT(apart_beyond, 100);
 }
 
 }  // namespace
