@@ -39,31 +39,6 @@ ShapeMasks masks_of(const b2Fixture& fixture) {
   return polygon_internal_edges(fixture);
 }
 
-// Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
-// A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
-// the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.
-void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape& a,
-                           const b2CircleShape& b, const b2Vec2& center) {
-  manifold->pointCount = mf.point_count;
-  if (mf.point_count == 0) return;
-  const int e1 = mf.reference_edge;
-  const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
-  const b2Vec2 normal(mf.normal.x(), mf.normal.y());
-  manifold->type = b2Manifold::e_faceA;
-  if (normal.x == a.m_normals[e1].x && normal.y == a.m_normals[e1].y) {
-    manifold->localNormal = a.m_normals[e1];
-    manifold->localPoint = 0.5f * (a.m_vertices[e1] + a.m_vertices[e2]);
-  } else {
-    manifold->localNormal = normal;
-    manifold->localPoint = center - (mf.points[0].separation + b.m_radius) * normal;
-  }
-  b2ManifoldPoint& mp = manifold->points[0];
-  mp.localPoint = b.m_p;
-  mp.normalImpulse = 0;
-  mp.tangentImpulse = 0;
-  mp.id.key = 0;
-}
-
 // Writes the solver's manifold `mf` of polygons `a` and `b` (computed in A's body frame; `b_in_a`:
 // B's body frame given in A's) as Box2D's: the reference face from the polygon's own data (not
 // the solver's recomputed normal: Box2D's solver then sees exactly the plane Box2D would have
@@ -178,9 +153,5 @@ void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
 
 // A polygon and a circle.
 
-void PolygonCirclePair::write(b2Manifold* manifold, const Manifold<float>& m,
-                              const PairPose& pose) const {
-  write_circle_manifold(manifold, m, a, b, pose.centroid_b_in_a);
-}
 
 }  // namespace dyop::box2d::detail

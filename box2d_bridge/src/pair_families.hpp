@@ -227,6 +227,31 @@ struct PolygonPair : ExactPair {
   }
 };
 
+// Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
+// A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
+// the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.
+inline void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape& a,
+                           const b2CircleShape& b, const b2Vec2& center) {
+  manifold->pointCount = mf.point_count;
+  if (mf.point_count == 0) return;
+  const int e1 = mf.reference_edge;
+  const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
+  const b2Vec2 normal(mf.normal.x(), mf.normal.y());
+  manifold->type = b2Manifold::e_faceA;
+  if (normal.x == a.m_normals[e1].x && normal.y == a.m_normals[e1].y) {
+    manifold->localNormal = a.m_normals[e1];
+    manifold->localPoint = 0.5f * (a.m_vertices[e1] + a.m_vertices[e2]);
+  } else {
+    manifold->localNormal = normal;
+    manifold->localPoint = center - (mf.points[0].separation + b.m_radius) * normal;
+  }
+  b2ManifoldPoint& mp = manifold->points[0];
+  mp.localPoint = b.m_p;
+  mp.normalImpulse = 0;
+  mp.tangentImpulse = 0;
+  mp.id.key = 0;
+}
+
 // A polygon (fixture A) and a circle (fixture B), in Box2D's registry order; its manifolds are
 // `e_faceA`, as Box2D's (see `write`).
 struct PolygonCirclePair : ExactPair {
@@ -259,7 +284,11 @@ struct PolygonCirclePair : ExactPair {
   // (measured: docs/measurements.md, "Everyday shapes").
   [[gnu::always_inline]] inline Result<float> solve(const Setting&, const Query& q,
                                                     const PairPose& pose, ContactMemory&) const;
-  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
+  // Inline: the answer's manifold then stays in registers (measured: docs/measurements.md,
+  // "Everyday shapes").
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const {
+    write_circle_manifold(manifold, m, a, b, pose.centroid_b_in_a);
+  }
   void box2d(b2Manifold* manifold) const {
     b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
   }
