@@ -125,7 +125,8 @@ template <class T, class P>
   const T plain_separation = plain.signed_distance - radius;
   // The rule: a push along an internal edge's normal or from a closed vertex is replaced by the
   // least push along an allowed face the circle reaches; none: no contact from this pair.
-  CenterPlace<T> at = plain;
+  CenterPlace<T> ruled;  // the rule's face, where it replaces the plain answer
+  const CenterPlace<T>* at = &plain;
   bool no_usable_axis = false;
   const ShapeMasks& m = q.masks_a;
   const bool refused = plain.type == Feature::Type::Edge
@@ -137,20 +138,19 @@ template <class T, class P>
       if (((m.edges >> pa.input_edge(e)) & 1) != 0) continue;
       if (segment_distance(pa, v, e, c) > radius + q.margin + band) continue;
       const T s = pa.normal(e).dot(c - v[e]);
-      if (best < 0 || s > at.signed_distance) {
+      if (best < 0 || s > ruled.signed_distance) {
         best = e;
-        at.signed_distance = s;
+        ruled.signed_distance = s;
       }
     }
     no_usable_axis = best < 0;
     if (best >= 0) {
-      at.type = Feature::Type::Edge;
-      at.index = best;
-      at.best_face = best;
-      at.normal = pa.normal(best);
-      at.nearest = c - at.signed_distance * at.normal;
-    } else {
-      at = plain;
+      ruled.type = Feature::Type::Edge;
+      ruled.index = best;
+      ruled.best_face = best;
+      ruled.normal = pa.normal(best);
+      ruled.nearest = c - ruled.signed_distance * ruled.normal;
+      at = &ruled;
     }
   }
 
@@ -158,7 +158,7 @@ template <class T, class P>
   r.status = status_of_overlap(-plain_separation, band);
   // The status and a pair apart are the plain answer's; a touching or penetrating one is pushed
   // along the rule's face.
-  const CenterPlace<T>& answer = r.status == Status::Separated ? plain : at;
+  const CenterPlace<T>& answer = r.status == Status::Separated ? plain : *at;
   if (q.level == Level::Overlap) return r;
   r.separation = answer.signed_distance - radius;
   r.depth = std::max(T(0), -r.separation);
@@ -174,12 +174,12 @@ template <class T, class P>
   if (q.level != Level::Manifold) return r;
   Manifold<T>& mf = r.manifold;
   mf.reference_is_a = true;
-  mf.reference_edge = static_cast<std::uint8_t>(pa.input_edge(at.best_face));
-  mf.normal = at.normal;
-  const T separation = at.signed_distance - radius;
+  mf.reference_edge = static_cast<std::uint8_t>(pa.input_edge(at->best_face));
+  mf.normal = at->normal;
+  const T separation = at->signed_distance - radius;
   if (no_usable_axis || separation > q.margin) return r;
   ManifoldPoint<T>& point = mf.points[0];
-  point.point = c - radius * at.normal + origin;
+  point.point = c - radius * at->normal + origin;
   point.separation = separation;
   point.key = 0;
   mf.point_count = 1;
