@@ -151,7 +151,4 @@ void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
   write_polygon_manifold(manifold, m, a, b, pose.b_in_a);
 }
 
-// A polygon and a circle.
-
-
 }  // namespace dyop::box2d::detail

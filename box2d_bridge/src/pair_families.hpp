@@ -230,8 +230,9 @@ struct PolygonPair : ExactPair {
 // Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
 // A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
 // the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.
-inline void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape& a,
-                           const b2CircleShape& b, const b2Vec2& center) {
+inline void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf,
+                                  const b2PolygonShape& a, const b2CircleShape& b,
+                                  const b2Vec2& center) {
   manifold->pointCount = mf.point_count;
   if (mf.point_count == 0) return;
   const int e1 = mf.reference_edge;

@@ -68,9 +68,10 @@ int paper_repetitions(bool quick) { return quick ? 41 : 201; }
 std::vector<box2d::Backend> compare_backends(const CompareOptions& options) {
   std::vector<box2d::Backend> out;
   for (box2d::Backend b : box2d::all_backends) {
-    const bool named = std::find(options.backends.begin(), options.backends.end(), b) !=
-                       options.backends.end();
-    const bool by_default = !options.quick || b == box2d::Backend::Dyop || b == box2d::Backend::Box2D;
+    const bool named =
+        std::find(options.backends.begin(), options.backends.end(), b) != options.backends.end();
+    const bool by_default =
+        !options.quick || b == box2d::Backend::Dyop || b == box2d::Backend::Box2D;
     if (options.backends.empty() ? by_default : named) out.push_back(b);
   }
   return out;

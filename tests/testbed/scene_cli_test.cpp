@@ -59,8 +59,8 @@ TEST(SceneCli, UnknownSceneOrRunnerIsAUsageError) {
 
 TEST(SceneCli, CompareRunsTheNamedBackendsAloneAndRefusesAnUnknownOne) {
   const std::string dir = temp_dir("compare_backend").string();
-  const Outcome r = run("compare --scene stack --steps 20 --section in-world --backend sat --out " +
-                        dir);
+  const Outcome r =
+      run("compare --scene stack --steps 20 --section in-world --backend sat --out " + dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("| stack | sat | 20 |"), std::string::npos) << r.out;
   for (const char* other : {"| stack | dyop |", "| stack | box2d |", "| stack | epa |"}) {
