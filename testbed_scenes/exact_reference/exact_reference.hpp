@@ -1,15 +1,17 @@
 #pragma once
 // The exact reference: penetration depth and distance of two convex polygons (two triangles,
-// or 3 to 8 vertices each) and of a polygon and a circle, computed with exact rational arithmetic
-// (GMP) on the given doubles, rounded once at the end.
+// or 3 to 8 vertices each) and of a polygon and a circle, computed exactly (GMP) on the given
+// doubles, rounded once at the end.
 //
-// Two polygons: depth = min over both polygons' edge normals (the Minkowski difference's axes) of
-// the overlap; each overlap is N/sqrt(L) with N and L exact rationals, evaluated as a 256-bit
-// float (rounding far below double's). Distance when apart = the least of the exact vertex–segment
-// distances, both ways. A polygon and a circle: the centre's signed distance from the polygon less
-// the radius; inside, minus the least distance to an edge line (N/sqrt(L) each), outside, the
-// square root of the exact squared distance to the nearest edge, its sign decided exactly against
-// the squared radius.
+// Every double of a pair is an integer times a power of two; with the least such power of the pair
+// as the unit, every coordinate is an exact integer, and every product, sum and comparison below
+// is exact integer arithmetic. Two polygons: depth = min over both polygons' edge normals (the
+// Minkowski difference's axes) of the overlap N/sqrt(L), N and L exact integers, the least found
+// by exact comparison and only it evaluated, as a 256-bit float (rounding far below double's).
+// Distance when apart = the least of the exact vertex–segment distances, both ways. A polygon and
+// a circle: the centre's signed distance from the polygon less the radius; inside, minus the least
+// distance to an edge line, outside, the square root of the exact squared distance to the nearest
+// edge, its sign decided exactly against the squared radius.
 
 #include "workloads/raw_convex_pair.hpp"
 #include "workloads/raw_pair.hpp"
