@@ -2,6 +2,7 @@
 // with Box2D, also the rain scene's scaling with the number of triangles.
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 

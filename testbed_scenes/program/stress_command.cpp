@@ -1,6 +1,7 @@
 // `dyop stress`: numerical stability on hostile input, per runner, category and precision.
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,7 +1,6 @@
 // `dyop compare`'s main charts (time per method, time against error): gnuplot scripts and their
 // data files, drawn as SVG. Each section draws its own.
 #include <algorithm>
-#include <limits>
 #include <sstream>
 
 #include "report/compare_report_files.hpp"
@@ -16,8 +15,6 @@ using namespace dyop::experiments;
 
 // The errors below this are drawn at this value on the log axis (exact methods have zeros).
 constexpr double kErrorFloor = 1e-9;
-// A missing figure in a chart's data file (gnuplot's missing value).
-constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
 
 const char* const kTerminal = "svg size 1000,520 dynamic font 'sans,11' background '#ffffff'";
 
@@ -43,7 +40,7 @@ class MainCharts {
         std::vector<double> times;
         for (box2d::Backend b : backends_) {
           const SceneMetrics* m = row(run_, s, b);
-          times.push_back(m ? m->narrowphase_ns_per_pair : kMissing);
+          times.push_back(m ? m->narrowphase_ns_per_pair : missing_figure);
         }
         write_data_line(o, s, times);
       }

@@ -2,7 +2,6 @@
 #include "report/compare_in_world.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -13,14 +12,8 @@
 #include "scenes/scene.hpp"
 
 namespace dyop::report {
-namespace {
 
 using experiments::InWorldRatio;
-
-// A missing figure in a chart's data file (gnuplot's missing value).
-constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
-
-}  // namespace
 
 Records in_world_records(const std::vector<InWorldRatio>& rows) {
   Records out({{"scene", "scene", "", -14},
@@ -98,7 +91,7 @@ void InWorldSection::write_files(ReportDirectory& dir, Charts& charts) const {
         return step ? r.step_ratio() : r.narrowphase_ratio();
       }
     }
-    return kMissing;
+    return missing_figure;
   };
   for (const bool step : {false, true}) {
     dir.write(step ? "inworld_step.dat" : "inworld_collide.dat", [&](std::ostream& o) {

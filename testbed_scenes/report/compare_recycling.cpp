@@ -1,7 +1,6 @@
 // `dyop compare`'s recycling section: run time against error of `Config::recycle_distance`, per
 // scene, with the floor (`experiments/recycling_sweep.hpp`).
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "experiments/recycling_sweep.hpp"
@@ -26,8 +25,6 @@ const std::vector<std::string> kScenes = {"pyramid",   "stack",   "rain",
 const std::vector<std::string> kQuickScenes = {"pyramid"};
 const std::vector<float> kQuickDistances = {0.0f, box2d::default_recycle_distance, 0.02f};
 
-constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();
-
 const char* row_name(SweepRow r) {
   switch (r) {
     case SweepRow::Own:
@@ -41,7 +38,7 @@ const char* row_name(SweepRow r) {
 }
 
 Value ratio(const RecyclingRecord& r, double (experiments::InWorldRatio::*f)() const) {
-  return Value::number(r.timing ? ((*r.timing).*f)() : kMissing, "%.2f");
+  return Value::number(r.timing ? ((*r.timing).*f)() : missing_figure, "%.2f");
 }
 
 Records sweep_records(const std::vector<RecyclingRecord>& rows) {
@@ -67,25 +64,26 @@ Records sweep_records(const std::vector<RecyclingRecord>& rows) {
   for (const RecyclingRecord& r : rows) {
     const scenes::SceneMetrics* a = r.accuracy ? &*r.accuracy : nullptr;
     const scenes::ManifoldErrors* e = a && a->manifold_errors ? &*a->manifold_errors : nullptr;
-    const auto metres = [](bool has, double v) { return Value::metres(has ? v : kMissing); };
+    const auto metres = [](bool has, double v) { return Value::metres(has ? v : missing_figure); };
     const bool slide = a && a->slide;
-    out.add({Value::text(r.scene), Value::text(row_name(r.row)),
-             Value::number(r.row == SweepRow::Plugin ? r.distance : kMissing, "%.3f"),
-             ratio(r, &experiments::InWorldRatio::narrowphase_ratio),
-             ratio(r, &experiments::InWorldRatio::solve_toi_ratio),
-             ratio(r, &experiments::InWorldRatio::step_ratio),
-             Value::number(r.timing ? r.timing->own.narrowphase_ms : kMissing, "%.3f"),
-             Value::number(r.timing ? r.timing->plugin.narrowphase_ms : kMissing, "%.3f"),
-             Value::number(r.timing ? r.timing->own.step_ms : kMissing, "%.3f"),
-             Value::number(r.timing ? r.timing->plugin.step_ms : kMissing, "%.3f"),
-             Value::number(r.row == SweepRow::Plugin ? 100 * r.recycled_share : kMissing, "%.1f"),
-             metres(e, e ? e->kept_max : 0),
-             e ? Value::count(static_cast<std::int64_t>(e->stale)) : Value::text("n/a"),
-             metres(e, e ? e->depth_max : 0), metres(e, e ? e->normal_max : 0),
-             metres(a, a ? a->max_penetration : 0),
-             metres(a && a->top_displacement, a && a->top_displacement ? *a->top_displacement : 0),
-             Value::number(slide ? 100 * a->slide->min_travel : kMissing, "%.1f"),
-             Value::number(slide ? a->slide->max_vertical_speed : kMissing, "%.4f")});
+    out.add(
+        {Value::text(r.scene), Value::text(row_name(r.row)),
+         Value::number(r.row == SweepRow::Plugin ? r.distance : missing_figure, "%.3f"),
+         ratio(r, &experiments::InWorldRatio::narrowphase_ratio),
+         ratio(r, &experiments::InWorldRatio::solve_toi_ratio),
+         ratio(r, &experiments::InWorldRatio::step_ratio),
+         Value::number(r.timing ? r.timing->own.narrowphase_ms : missing_figure, "%.3f"),
+         Value::number(r.timing ? r.timing->plugin.narrowphase_ms : missing_figure, "%.3f"),
+         Value::number(r.timing ? r.timing->own.step_ms : missing_figure, "%.3f"),
+         Value::number(r.timing ? r.timing->plugin.step_ms : missing_figure, "%.3f"),
+         Value::number(r.row == SweepRow::Plugin ? 100 * r.recycled_share : missing_figure, "%.1f"),
+         metres(e, e ? e->kept_max : 0),
+         e ? Value::count(static_cast<std::int64_t>(e->stale)) : Value::text("n/a"),
+         metres(e, e ? e->depth_max : 0), metres(e, e ? e->normal_max : 0),
+         metres(a, a ? a->max_penetration : 0),
+         metres(a && a->top_displacement, a && a->top_displacement ? *a->top_displacement : 0),
+         Value::number(slide ? 100 * a->slide->min_travel : missing_figure, "%.1f"),
+         Value::number(slide ? a->slide->max_vertical_speed : missing_figure, "%.4f")});
   }
   return out;
 }
@@ -133,7 +131,7 @@ class RecyclingSection : public CompareSection {
           if (r.scene != s || r.row != SweepRow::Plugin) continue;
           const double kept = r.accuracy && r.accuracy->manifold_errors
                                   ? r.accuracy->manifold_errors->kept_max
-                                  : kMissing;
+                                  : missing_figure;
           write_data_line(o, s,
                           {1000.0 * r.distance, r.timing->narrowphase_ratio(),
                            r.timing->step_ratio(), 1000.0 * kept});

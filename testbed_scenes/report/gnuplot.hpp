@@ -5,6 +5,7 @@
 /// `ReportDirectory::chart` (`report/report_directory.hpp`), which quotes every path it names.
 
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -21,6 +22,10 @@ std::string gnuplot_quote(const std::string& text);
 /// it) and runs gnuplot on it; the problem when the chart was not drawn (the script could not be
 /// written: `NotWritten`; gnuplot missing or failing: `ChartNotDrawn`).
 std::optional<Problem> run_gnuplot(const std::string& script, const std::string& script_path);
+
+/// A missing figure in a chart's data file (written "NaN", gnuplot's missing value); in a table,
+/// a figure not measured.
+inline constexpr double missing_figure = std::numeric_limits<double>::quiet_NaN();
 
 /// One line of a chart's data file: `label`, then each value with six significant digits, space
 /// separated; a non-finite value is written "NaN", gnuplot's missing value.

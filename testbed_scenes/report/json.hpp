@@ -1,10 +1,12 @@
 #pragma once
 /// \file
-/// The reports' JSON, through nlohmann-json: keys stay in the order they are written.
+/// The reports' JSON, through nlohmann-json: keys stay in the order they are written. Declared
+/// only (nlohmann's forward header): a file that builds or reads values includes
+/// `<nlohmann/json.hpp>` itself, so that the many files that only pass a value on do not compile
+/// the library.
 
-#include <cmath>
-#include <nlohmann/json.hpp>
-#include <ostream>
+#include <iosfwd>
+#include <nlohmann/json_fwd.hpp>
 
 namespace dyop::report {
 
@@ -12,11 +14,9 @@ namespace dyop::report {
 using Json = nlohmann::ordered_json;
 
 /// A figure as JSON: null when non-finite (JSON has no NaN or infinity).
-inline Json json_number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+Json json_number(double v);
 
 /// `document` indented by two spaces, then a newline.
-inline void write_json_document(const Json& document, std::ostream& out) {
-  out << document.dump(2) << '\n';
-}
+void write_json_document(const Json& document, std::ostream& out);
 
 }  // namespace dyop::report

@@ -1,6 +1,7 @@
 #include "report/records.hpp"
 
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
 

@@ -1,6 +1,7 @@
 // `dyop view`'s recording (two runners over one scene, frame by frame) and its page.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
