@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include "exact_reference/exact_reference.hpp"
+#include "workloads/convex_classes.hpp"
 
 namespace dyop::workloads {
 namespace {
@@ -79,6 +80,58 @@ TEST(ExactReference, EdgeOverlapIsHowFarTheOtherShapeReachesPastThatEdge) {
   const RawCirclePair circle{a, RawCircle{V(1, 2.5), 1}};
   EXPECT_EQ(exact_edge_overlap(circle, 2), 0.5);
   EXPECT_EQ(exact_edge_overlap(circle, 1), 2.0);
+}
+
+// The reference works on integers in units of the pair's least power of two: the answer of a pair
+// scaled by any power of two, 2^-1000 to 2^900, is the answer scaled, exactly, wherever the scale
+// loses no bit of the coordinates or of the answer (nearly every pair).
+TEST(ExactReference, APairScaledByAPowerOfTwoGivesTheAnswerScaledExactly) {
+  const auto keeps_bits = [](double x, int k) { return std::ldexp(std::ldexp(x, k), -k) == x; };
+  const auto scaled = [&](RawPolygon p, int k, bool& kept) {
+    for (int i = 0; i < p.count; ++i) {
+      V& v = p.v[static_cast<std::size_t>(i)];
+      kept = kept && keeps_bits(v.x(), k) && keeps_bits(v.y(), k);
+      v = V(std::ldexp(v.x(), k), std::ldexp(v.y(), k));
+    }
+    return p;
+  };
+  int compared = 0;
+  int pairs = 0;
+  for (const ConvexClass c : {ConvexClass::Overlapping, ConvexClass::Separated,
+                              ConvexClass::Touching, ConvexClass::Nested}) {
+    const auto polygons = make_polygon_pairs(c, 50, 3, Precision::Double);
+    const auto circles = make_circle_pairs(c, 50, 3, Precision::Double);
+    for (const int k : {-1000, -60, 60, 900}) {
+      for (const RawPolygonPair& p : polygons) {
+        ++pairs;
+        const ExactAnswer e = exact_separation(p);
+        const double overlap = exact_edge_overlap(p, true, 0);
+        bool kept = keeps_bits(e.separation, k) && keeps_bits(overlap, k);
+        const RawPolygonPair q{scaled(p.a, k, kept), scaled(p.b, k, kept)};
+        if (!kept) continue;
+        ++compared;
+        const ExactAnswer s = exact_separation(q);
+        EXPECT_EQ(s.sign, e.sign) << name(c) << " 2^" << k;
+        EXPECT_EQ(s.separation, std::ldexp(e.separation, k)) << name(c) << " 2^" << k;
+        EXPECT_EQ(exact_edge_overlap(q, true, 0), std::ldexp(overlap, k)) << name(c) << " 2^" << k;
+      }
+      for (const RawCirclePair& p : circles) {
+        ++pairs;
+        const ExactAnswer e = exact_separation(p);
+        bool kept = keeps_bits(e.separation, k) && keeps_bits(p.b.center.x(), k) &&
+                    keeps_bits(p.b.center.y(), k) && keeps_bits(p.b.radius, k);
+        const RawCircle circle{V(std::ldexp(p.b.center.x(), k), std::ldexp(p.b.center.y(), k)),
+                               std::ldexp(p.b.radius, k)};
+        const RawCirclePair q{scaled(p.a, k, kept), circle};
+        if (!kept) continue;
+        ++compared;
+        const ExactAnswer s = exact_separation(q);
+        EXPECT_EQ(s.sign, e.sign) << name(c) << " 2^" << k;
+        EXPECT_EQ(s.separation, std::ldexp(e.separation, k)) << name(c) << " 2^" << k;
+      }
+    }
+  }
+  EXPECT_GE(compared, pairs * 9 / 10) << "pairs whose scale loses no bit";
 }
 
 }  // namespace
