@@ -16,6 +16,7 @@
 #include "report/compare_tables.hpp"
 #include "report/format.hpp"
 #include "report/report_directory.hpp"
+#include "scenes/runner.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
@@ -82,13 +83,11 @@ void add_compare_command(CLI::App& app, int& exit_code) {
                   "Only these sections after the main table (repeatable; default: all)")
       ->check(CLI::IsMember(report::compare_section_names()));
   auto backends = std::make_shared<std::vector<std::string>>();
-  std::vector<std::string> backend_names;
-  for (box2d::Backend b : box2d::all_backends) backend_names.push_back(box2d::name(b));
   cmd->add_option("--backend", *backends,
                   "Only these backends in the main table and the in-world section (repeatable; "
                   "default: every backend, with --quick dyop and box2d, and dyop in the in-world "
                   "section)")
-      ->check(CLI::IsMember(backend_names));
+      ->check(CLI::IsMember(scenes::runner_names(false)));
   auto skip = std::make_shared<std::string>("all");
   const std::string skip_help =
       scenes::skip_help() +

@@ -14,6 +14,7 @@
 #include "report/output.hpp"
 #include "report/svg.hpp"
 #include "report/metrics_io.hpp"
+#include "scenes/runner.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
@@ -165,14 +166,12 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneCommand>();
   auto steps = std::make_shared<int>(0);
   auto falling = std::make_shared<int>(0);
-  std::vector<std::string> names, runners;
+  std::vector<std::string> names;
   std::string list;
   for (const scenes::SceneInfo& s : scenes::scene_catalog()) {
     names.push_back(s.name);
     list += std::string("\n  ") + s.name + ": " + s.description;
   }
-  for (box2d::Backend b : box2d::all_backends) runners.push_back(box2d::name(b));
-  runners.push_back(scenes::box2d_own);
   CLI::App* cmd = app.add_subcommand(
       "scene", "Run one headless scene under one narrow phase and measure it. Scenes:" + list);
   cmd->add_option("name", args->scene, "Scene")->required()->check(CLI::IsMember(names));
@@ -180,7 +179,7 @@ void add_scene_command(CLI::App& app, int& exit_code) {
                   "What answers the polygon pairs: a backend of the plug-in (box2d: Box2D's "
                   "b2CollidePolygons through the plug-in), or box2d-own: the plug-in not installed")
       ->required()
-      ->check(CLI::IsMember(runners));
+      ->check(CLI::IsMember(scenes::runner_names(true)));
   CLI::Option* steps_option =
       cmd->add_option("--steps", *steps, "Steps to run (default: the scene's own)")
           ->check(CLI::Range(1, 10000000));

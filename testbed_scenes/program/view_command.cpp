@@ -20,6 +20,7 @@
 #include "report/format.hpp"
 #include "report/output.hpp"
 #include "report/viewer_page.hpp"
+#include "scenes/runner.hpp"
 #include "scenes/scene.hpp"
 
 namespace dyop::cli {
@@ -173,15 +174,13 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
 void add_view_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ViewCommand>();
   auto steps = std::make_shared<int>(0);
-  std::vector<std::string> names, runners;
+  std::vector<std::string> names;
   for (const SceneInfo& s : scene_catalog()) names.push_back(s.name);
   for (const experiments::GroundLevel level : experiments::ground_levels) {
     if (experiments::builders_available(level)) {
       names.push_back(experiments::ground_recording_name(level));
     }
   }
-  for (box2d::Backend b : box2d::all_backends) runners.push_back(box2d::name(b));
-  runners.push_back(box2d_own);
   CLI::App* cmd = app.add_subcommand(
       "view",
       "Record one scene under two runners and write one self-contained HTML page that plays "
@@ -196,7 +195,7 @@ void add_view_command(CLI::App& app, int& exit_code) {
                   "box2d-own (the plug-in not installed)")
       ->capture_default_str()
       ->expected(2)
-      ->check(CLI::IsMember(runners));
+      ->check(CLI::IsMember(runner_names(true)));
   CLI::Option* steps_option =
       cmd->add_option("--steps", *steps, "Steps to record (default: the scene's own)")
           ->check(CLI::Range(1, 10000000));

@@ -51,7 +51,7 @@ bool active(const b2Body* body) { return body->IsAwake() && body->GetType() != b
 
 }  // namespace
 
-double exact_separation(const Triangle<double>& a, const Triangle<double>& b, double band) {
+double separation_as_tallied(const Triangle<double>& a, const Triangle<double>& b, double band) {
   const Result<double> r = sat(a, b, gap_only);
   if (r.status == Status::Separated && !(r.separation > gap_beyond_band * band)) {
     return sat(a, b).separation;
@@ -131,7 +131,7 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     if (!xa.ok() || !xb.ok()) continue;  // valid in float, hence in double: never taken
     const double band = static_cast<double>(touching_tolerance<float>()) *
                         std::max(xa.triangle.size(), xb.triangle.size());
-    errors.add(r.status, r.depth, exact_separation(xa.triangle, xb.triangle, band), band);
+    errors.add(r.status, r.depth, separation_as_tallied(xa.triangle, xb.triangle, band), band);
   }
   // Contacts not met this pass are gone; forget their caches.
   for (auto it = caches_.begin(); it != caches_.end();) {

@@ -62,7 +62,7 @@ class CollideRule {
 /// reads it: minus the depth of a pair in contact, the distance of a pair apart by up to twice
 /// `band` (the tally's touching band, metres), and for a pair apart farther a gap that proves it
 /// (above twice `band`, at most the distance but for rounding: the tally counts the same from it).
-double exact_separation(const Triangle<double>& a, const Triangle<double>& b, double band);
+double separation_as_tallied(const Triangle<double>& a, const Triangle<double>& b, double band);
 
 class ContactProbe {
  public:

@@ -5,7 +5,9 @@
 /// pairs.
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "adapters/narrow_phase.hpp"
 #include "dyop/box2d.hpp"
@@ -22,6 +24,15 @@ using Runner = std::optional<box2d::Backend>;
 
 /// `box2d::name(*runner)`, or `box2d_own`.
 inline const char* name(const Runner& runner) { return runner ? box2d::name(*runner) : box2d_own; }
+
+/// Every backend's name in `box2d::all_backends`' order, then `box2d_own` when `with_box2d_own`:
+/// what a command line accepts.
+inline std::vector<std::string> runner_names(bool with_box2d_own) {
+  std::vector<std::string> out;
+  for (box2d::Backend b : box2d::all_backends) out.push_back(box2d::name(b));
+  if (with_box2d_own) out.push_back(box2d_own);
+  return out;
+}
 
 /// The runner spelt `s` (a backend's name or `box2d_own`), or nothing.
 inline std::optional<Runner> parse_runner(std::string_view s) {

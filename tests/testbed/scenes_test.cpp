@@ -187,7 +187,7 @@ TEST(ContactProbe, CountsExactlyWhatCollideUpdates) {
 // band: what it hands the tally is the full answer's separation wherever the tally reads its value
 // (in contact, or apart within the band), and beyond the band a value above the band and at most
 // the distance (but for rounding), from which the tally counts the same.
-TEST(ContactProbe, ExactSeparationIsTheFullAnswerWhereverTheTallyReadsIt) {
+TEST(ContactProbe, SeparationAsTalliedIsTheFullAnswerWhereverTheTallyReadsIt) {
   std::mt19937 rng(2026);
   std::uniform_real_distribution<double> u(-1, 1);
   int in_contact = 0, apart_within = 0, apart_beyond = 0;
@@ -200,7 +200,7 @@ TEST(ContactProbe, ExactSeparationIsTheFullAnswerWhereverTheTallyReadsIt) {
     if (!a.ok() || !b.ok()) continue;
     const double band = i % 2 == 0 ? 0.0 : 0.2;
     const double full = sat(a.triangle, b.triangle).separation;
-    const double fast = exact_separation(a.triangle, b.triangle, band);
+    const double fast = separation_as_tallied(a.triangle, b.triangle, band);
     if (full <= band) {
       EXPECT_EQ(fast, full) << "pair " << i;
       (full <= 0 ? in_contact : apart_within) += 1;
