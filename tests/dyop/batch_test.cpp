@@ -130,18 +130,24 @@ double witness_miss(const RawPair& p, const V2& n, double separation) {
   return miss;
 }
 
+// Each test below is a function of the precision and the kernel, called by the typed suite for
+// every pair of them: its body is compiled once per precision, the kernel being a run-time
+// argument of `penetrate_batch`.
 template <class C>
 class Batch : public ::testing::Test {
  protected:
-  using T = typename C::T;
   void SetUp() override {
     if (!batch_kernel_available(C::kernel))
       GTEST_SKIP() << name(C::kernel) << " not available here";
   }
-  BatchError run(const Columns<T>& cols, std::size_t count, Level level, Outputs<T>& out) {
-    return penetrate_batch(cols.batch(count), level, out.out(), C::kernel);
-  }
 };
+
+// The batch of the first `count` rows of `cols` through `kernel`.
+template <class T>
+BatchError run_batch(BatchKernel kernel, const Columns<T>& cols, std::size_t count, Level level,
+                     Outputs<T>& out) {
+  return penetrate_batch(cols.batch(count), level, out.out(), kernel);
+}
 
 struct ConfigNames {
   template <class C>
@@ -159,8 +165,8 @@ TYPED_TEST_SUITE(Batch, Configs, ConfigNames);
 
 // 10 classes × 2,500 = 25,000 seeded pairs, each row checked against sat on the same T input,
 // and its separation against the exact rational reference on that input.
-TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
-  using T = typename TypeParam::T;
+template <class T>
+void agrees_with_sat_on_every_pair_class(BatchKernel kernel) {
   constexpr int kPerClass = 2500;
   const double tol = separation_tolerance<T>();
   std::ostringstream figures;
@@ -168,7 +174,7 @@ TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
     const auto pairs = workloads::make_valid_pairs(c, kPerClass, 5);
     const Columns<T> cols = columns<T>(pairs);
     Outputs<T> out(cols.size());
-    ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, out), BatchError::None);
+    ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Depth, out), BatchError::None);
     ASSERT_TRUE(out.guard_intact());
     double worst = 0, worst_exact = 0;
     int band_edge = 0, other_axis = 0, invalid = 0;
@@ -219,18 +225,21 @@ TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
             << other_axis << ", invalid in T " << invalid << "; ";
     EXPECT_LE(band_edge, kPerClass / 1000) << workloads::name(c);
   }
-  this->RecordProperty("figures", figures.str());
+  ::testing::Test::RecordProperty("figures", figures.str());
   std::printf("[ figures  ] %s\n", figures.str().c_str());
+}
+TYPED_TEST(Batch, AgreesWithSatOnEveryPairClass) {
+  agrees_with_sat_on_every_pair_class<typename TypeParam::T>(TypeParam::kernel);
 }
 
 // Overlap computes the same statuses and writes nothing else (null arrays are then allowed).
-TYPED_TEST(Batch, OverlapLevelWritesTheSameStatusesAndNothingElse) {
-  using T = typename TypeParam::T;
+template <class T>
+void overlap_level_writes_the_same_statuses_and_nothing_else(BatchKernel kernel) {
   const auto pairs = workloads::make_valid_pairs(workloads::InputClass::General, 1000, 11);
   const Columns<T> cols = columns<T>(pairs);
   Outputs<T> depth(cols.size()), overlap(cols.size());
-  ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, depth), BatchError::None);
-  ASSERT_EQ(this->run(cols, cols.size(), Level::Overlap, overlap), BatchError::None);
+  ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Depth, depth), BatchError::None);
+  ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Overlap, overlap), BatchError::None);
   EXPECT_EQ(depth.status, overlap.status);
   for (std::size_t k = 0; k < cols.size() + Outputs<T>::guard; ++k) {
     ASSERT_EQ(overlap.separation[k], Outputs<T>::sentinel);
@@ -238,23 +247,26 @@ TYPED_TEST(Batch, OverlapLevelWritesTheSameStatusesAndNothingElse) {
     ASSERT_EQ(overlap.normal_y[k], Outputs<T>::sentinel);
   }
   std::vector<Status> status(cols.size());
-  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Overlap, {status.data()}, TypeParam::kernel),
+  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Overlap, {status.data()}, kernel),
             BatchError::None);
   EXPECT_EQ(status, std::vector<Status>(depth.status.begin(), depth.status.begin() + cols.size()));
+}
+TYPED_TEST(Batch, OverlapLevelWritesTheSameStatusesAndNothingElse) {
+  overlap_level_writes_the_same_statuses_and_nothing_else<typename TypeParam::T>(TypeParam::kernel);
 }
 
 // Any count, multiple of the width or not, gives every row exactly as a long batch does, and
 // writes nothing past the end; count 0 writes nothing and needs no arrays.
-TYPED_TEST(Batch, AnyCountGivesTheSameRowsAndWritesNothingPastTheEnd) {
-  using T = typename TypeParam::T;
+template <class T>
+void any_count_gives_the_same_rows_and_writes_nothing_past_the_end(BatchKernel kernel) {
   const auto pairs = workloads::make_valid_pairs(workloads::InputClass::General, 203, 3);
   const Columns<T> cols = columns<T>(pairs);
   Outputs<T> full(cols.size());
-  ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, full), BatchError::None);
+  ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Depth, full), BatchError::None);
   for (std::size_t count : {0, 1, 2, 3, 4, 5, 7, 8, 9, 11, 15, 16, 17, 31, 33, 100, 203}) {
     SCOPED_TRACE(::testing::Message() << "count " << count);
     Outputs<T> out(count);
-    ASSERT_EQ(this->run(cols, count, Level::Depth, out), BatchError::None);
+    ASSERT_EQ(run_batch(kernel, cols, count, Level::Depth, out), BatchError::None);
     EXPECT_TRUE(out.guard_intact());
     for (std::size_t k = 0; k < count; ++k) {
       EXPECT_EQ(out.status[k], full.status[k]);
@@ -263,14 +275,18 @@ TYPED_TEST(Batch, AnyCountGivesTheSameRowsAndWritesNothingPastTheEnd) {
       EXPECT_EQ(out.normal_y[k], full.normal_y[k]);
     }
   }
-  EXPECT_EQ(penetrate_batch(PairBatch<T>{}, Level::Depth, BatchOutput<T>{}, TypeParam::kernel),
+  EXPECT_EQ(penetrate_batch(PairBatch<T>{}, Level::Depth, BatchOutput<T>{}, kernel),
             BatchError::None);
+}
+TYPED_TEST(Batch, AnyCountGivesTheSameRowsAndWritesNothingPastTheEnd) {
+  any_count_gives_the_same_rows_and_writes_nothing_past_the_end<typename TypeParam::T>(
+      TypeParam::kernel);
 }
 
 // Rows that Triangle<T>::make rejects are Invalid (separation and normal 0), at every lane
 // position and in the tail, batch_row_error names the problem, and the other rows are untouched.
-TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
-  using T = typename TypeParam::T;
+template <class T>
+void invalid_rows_are_marked_and_the_other_rows_unaffected(BatchKernel kernel) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   const double huge = 4.0 * double(max_coordinate<T>());
@@ -309,8 +325,8 @@ TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
     const Columns<T> mixed = columns<T>(rows);
     const Columns<T> clean = columns<T>(valid);
     Outputs<T> got(mixed.size()), want(clean.size());
-    ASSERT_EQ(this->run(mixed, mixed.size(), Level::Depth, got), BatchError::None);
-    ASSERT_EQ(this->run(clean, clean.size(), Level::Depth, want), BatchError::None);
+    ASSERT_EQ(run_batch(kernel, mixed, mixed.size(), Level::Depth, got), BatchError::None);
+    ASSERT_EQ(run_batch(kernel, clean, clean.size(), Level::Depth, want), BatchError::None);
     for (std::size_t i = 0; i < bad.size(); ++i) {
       const std::size_t k = bad_rows[i];
       const bool expect_invalid =
@@ -334,13 +350,16 @@ TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
     }
   }
 }
+TYPED_TEST(Batch, InvalidRowsAreMarkedAndTheOtherRowsUnaffected) {
+  invalid_rows_are_marked_and_the_other_rows_unaffected<typename TypeParam::T>(TypeParam::kernel);
+}
 
 // Squared edge lengths beyond the range of the vector lanes' reciprocal square root estimate (below
 // the smallest normal float, or above the largest float in double) send their rows to the portable
 // code: every kernel then gives the same bits for them, and sat's answer. Such rows sit at several
 // lanes and in the tail, among ordinary ones.
-TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
-  using T = typename TypeParam::T;
+template <class T>
+void rows_beyond_the_fast_range_are_redone_portably(BatchKernel kernel) {
   const bool is_float = std::is_same_v<T, float>;
   // Double: squared lengths below and beyond float's range, where the estimate (taken in
   // float) cannot go. Float: min_size (9.1e-13) leaves no square out of range, so no row is redone.
@@ -360,7 +379,7 @@ TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
   }
   const Columns<T> cols = columns<T>(rows);
   Outputs<T> got(cols.size()), portable(cols.size());
-  ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, got), BatchError::None);
+  ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Depth, got), BatchError::None);
   ASSERT_EQ(penetrate_batch(cols.batch(), Level::Depth, portable.out(), BatchKernel::Portable),
             BatchError::None);
   int checked = 0;
@@ -383,10 +402,13 @@ TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
   }
   EXPECT_EQ(checked, 27);
 }
+TYPED_TEST(Batch, RowsBeyondTheFastRangeAreRedonePortably) {
+  rows_beyond_the_fast_range_are_redone_portably<typename TypeParam::T>(TypeParam::kernel);
+}
 
 // Worked cases (sat_test's), in every winding of both triangles and at any lane.
-TYPED_TEST(Batch, WorkedCasesInEveryWinding) {
-  using T = typename TypeParam::T;
+template <class T>
+void worked_cases_in_every_winding(BatchKernel kernel) {
   struct Case {
     RawPair pair;
     Status status;
@@ -433,7 +455,7 @@ TYPED_TEST(Batch, WorkedCasesInEveryWinding) {
   }
   const Columns<T> cols = columns<T>(rows);
   Outputs<T> out(cols.size());
-  ASSERT_EQ(this->run(cols, cols.size(), Level::Depth, out), BatchError::None);
+  ASSERT_EQ(run_batch(kernel, cols, cols.size(), Level::Depth, out), BatchError::None);
   const double tol = 100 * double(std::numeric_limits<T>::epsilon());
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const Case& c = cases[which[k]];
@@ -444,17 +466,21 @@ TYPED_TEST(Batch, WorkedCasesInEveryWinding) {
     EXPECT_NEAR(out.normal_y[k], c.normal.y(), tol);
   }
 }
+TYPED_TEST(Batch, WorkedCasesInEveryWinding) {
+  worked_cases_in_every_winding<typename TypeParam::T>(TypeParam::kernel);
+}
 
 // Found by fuzz_batch (float). Two slivers end to end, 24 apart: the widest gap along an edge
 // normal (0.094) is inside float's touching band (0.14), yet the pair is apart by 24. The
 // distance decides, at both levels, as it does for sat (DegenerateInFrame in degenerate_test).
-TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap) {
-  using T = typename TypeParam::T;
+template <class T>
+void slivers_end_to_end_are_apart_by_their_distance_not_by_their_widest_edge_gap(
+    BatchKernel kernel) {
   const RawPair pair{{V2(0, 0), V2(0, 4), V2(4, -1020)}, {V2(-4, 36908), V2(4, 1032), V2(0, 28)}};
   const Columns<T> cols = columns<T>(std::vector<RawPair>(11, pair));  // a block and a tail
   for (Level level : {Level::Overlap, Level::Depth}) {
     Outputs<T> out(cols.size());
-    ASSERT_EQ(this->run(cols, cols.size(), level, out), BatchError::None);
+    ASSERT_EQ(run_batch(kernel, cols, cols.size(), level, out), BatchError::None);
     for (std::size_t k = 0; k < cols.size(); ++k) {
       EXPECT_EQ(out.status[k], Status::Separated) << "row " << k;
       if (level == Level::Depth) {
@@ -463,30 +489,38 @@ TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap)
     }
   }
 }
+TYPED_TEST(Batch, SliversEndToEndAreApartByTheirDistanceNotByTheirWidestEdgeGap) {
+  slivers_end_to_end_are_apart_by_their_distance_not_by_their_widest_edge_gap<
+      typename TypeParam::T>(TypeParam::kernel);
+}
 
 // Contact and Manifold are refused, as are missing arrays; nothing is written then.
-TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
-  using T = typename TypeParam::T;
+template <class T>
+void rejects_unsupported_levels_and_missing_arrays_writing_nothing(BatchKernel kernel) {
   const Columns<T> cols =
       columns<T>(workloads::make_valid_pairs(workloads::InputClass::General, 10, 1));
   Outputs<T> out(cols.size());
-  EXPECT_EQ(this->run(cols, cols.size(), Level::Contact, out), BatchError::UnsupportedLevel);
-  EXPECT_EQ(this->run(cols, cols.size(), Level::Manifold, out), BatchError::UnsupportedLevel);
+  EXPECT_EQ(run_batch(kernel, cols, cols.size(), Level::Contact, out),
+            BatchError::UnsupportedLevel);
+  EXPECT_EQ(run_batch(kernel, cols, cols.size(), Level::Manifold, out),
+            BatchError::UnsupportedLevel);
   PairBatch<T> missing = cols.batch();
   missing.by2 = nullptr;
-  EXPECT_EQ(penetrate_batch(missing, Level::Overlap, out.out(), TypeParam::kernel),
-            BatchError::NullArray);
+  EXPECT_EQ(penetrate_batch(missing, Level::Overlap, out.out(), kernel), BatchError::NullArray);
   BatchOutput<T> no_normal = out.out();
   no_normal.normal_y = nullptr;
-  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Depth, no_normal, TypeParam::kernel),
-            BatchError::NullArray);
-  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Depth, BatchOutput<T>{}, TypeParam::kernel),
+  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Depth, no_normal, kernel), BatchError::NullArray);
+  EXPECT_EQ(penetrate_batch(cols.batch(), Level::Depth, BatchOutput<T>{}, kernel),
             BatchError::NullArray);
   for (std::size_t k = 0; k < out.status.size(); ++k) {
     EXPECT_EQ(static_cast<std::uint8_t>(out.status[k]), 0xAB);
     EXPECT_EQ(out.separation[k], Outputs<T>::sentinel);
   }
   EXPECT_NE(std::string(describe(BatchError::UnsupportedLevel)).find("Contact"), std::string::npos);
+}
+TYPED_TEST(Batch, RejectsUnsupportedLevelsAndMissingArraysWritingNothing) {
+  rejects_unsupported_levels_and_missing_arrays_writing_nothing<typename TypeParam::T>(
+      TypeParam::kernel);
 }
 
 }  // namespace
