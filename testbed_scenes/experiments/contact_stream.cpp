@@ -149,7 +149,6 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
   scenes::World world;
   workloads::Random rng(seed);
   (*build)(world, rng);
-  const scenes::CollideRule rule(world.get());
   // The id of every live polygon contact. Keyed by the contact itself: Box2D may reuse a freed
   // contact's memory for a new one, but an ending contact is erased on the pass whose step
   // destroys it, so a reused address always starts a new id.
@@ -160,7 +159,7 @@ ContactStream record_stream(std::string_view name, int steps, std::uint64_t seed
       const b2PolygonShape* a = polygon(c->GetFixtureA());
       const b2PolygonShape* b = polygon(c->GetFixtureB());
       if (a == nullptr || b == nullptr) continue;
-      const scenes::CollideAction action = rule.action(world.get(), *c);
+      const scenes::CollideAction action = scenes::collide_action(world.get(), *c);
       if (action == scenes::CollideAction::Destroy) {
         live.erase(c);
         continue;

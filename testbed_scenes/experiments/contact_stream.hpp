@@ -5,7 +5,7 @@
 ///
 /// Recording runs a catalogue scene under Box2D's own polygon contact (the plug-in uninstalled)
 /// and, before each `b2World::Step` from step 2 on, walks the contact list and keeps every
-/// polygon–polygon contact the step's `Collide` will update (`CollideRule`): the two shapes as
+/// polygon–polygon contact the step's `Collide` will update (`collide_action`): the two shapes as
 /// Box2D holds them and the two body transforms `Collide` will use. Step 1 is left out: its
 /// contacts are created inside `Step`. Circle and edge contacts are not recorded (the plug-in never
 /// sees them); polygon pairs with a side of more than 3 vertices are, as the plug-in receives them

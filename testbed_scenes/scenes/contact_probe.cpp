@@ -3,7 +3,7 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
-#include <cfloat>
+#include <cstring>
 #include <functional>
 
 #include "dyop/sat.hpp"
@@ -21,15 +21,12 @@ const b2PolygonShape& polygon(const b2Fixture* f) {
 
 Vec2<float> to_vec(const b2Vec2& v) { return {v.x, v.y}; }
 
-// Box2D's broad phase calls this for every proxy a query meets; its user data is the fixture's
-// proxy record, which is where the proxy id lives (the fixture keeps it in a protected member).
-struct ProxyCollector {
-  const b2BroadPhase* broad_phase;
-  std::unordered_map<const b2Fixture*, int>* proxy;
-  bool QueryCallback(int32 id) {
-    const auto* p = static_cast<const b2FixtureProxy*>(broad_phase->GetUserData(id));
-    (*proxy)[p->fixture] = id;
-    return true;
+// A fixture's broad-phase proxy for one child, as `b2ContactManager::Collide` reads it: the fixture
+// keeps its proxies in a protected member, which a pointer to member formed in a derived class
+// reads from any fixture.
+struct FixtureProxies : b2Fixture {
+  static int32 id(const b2Fixture& fixture, int32 child) {
+    return (fixture.*(&FixtureProxies::m_proxies))[child].proxyId;
   }
 };
 
@@ -45,6 +42,17 @@ const Query<double> gap_only = [] {
 // Why: the gap is at most the distance, but the two are rounded apart (by units in the last
 // place): so far beyond the band, the distance is beyond it too.
 constexpr double gap_beyond_band = 2;
+
+// A triangle of float vertices in double.
+TriangleOrError<double> widen(const Triangle<float>& t) {
+  return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),
+                                t.vertex(2).cast<double>());
+}
+
+// The same vertices to the bit (a signed zero or a NaN included).
+bool same_points(const std::array<b2Vec2, 3>& p, const std::array<b2Vec2, 3>& q) {
+  return std::memcmp(p.data(), q.data(), sizeof p) == 0;
+}
 
 // Collide skips a contact unless one of its bodies is awake and can move.
 bool active(const b2Body* body) { return body->IsAwake() && body->GetType() != b2_staticBody; }
@@ -65,35 +73,23 @@ std::size_t ContactProbe::PairHash::operator()(
   return a ^ (std::hash<const void*>()(p.second) + 0x9e3779b97f4a7c15ull + (a << 6) + (a >> 2));
 }
 
-CollideRule::CollideRule(const b2World& world) { refresh(world); }
-
-void CollideRule::refresh(const b2World& world) {
-  proxy_.clear();
-  const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
-  ProxyCollector collector{&bp, &proxy_};
-  b2AABB everything;
-  everything.lowerBound.Set(-FLT_MAX, -FLT_MAX);
-  everything.upperBound.Set(FLT_MAX, FLT_MAX);
-  bp.Query(&collector, everything);
-}
-
-CollideAction CollideRule::action(const b2World& world, const b2Contact& contact) const {
+CollideAction collide_action(const b2World& world, const b2Contact& contact) {
   const b2Fixture* fa = contact.GetFixtureA();
   const b2Fixture* fb = contact.GetFixtureB();
   if (!active(fa->GetBody()) && !active(fb->GetBody())) return CollideAction::Skip;
   const b2BroadPhase& bp = world.GetContactManager().m_broadPhase;
-  if (!bp.TestOverlap(proxy_.at(fa), proxy_.at(fb))) return CollideAction::Destroy;
+  if (!bp.TestOverlap(FixtureProxies::id(*fa, contact.GetChildIndexA()),
+                      FixtureProxies::id(*fb, contact.GetChildIndexB()))) {
+    return CollideAction::Destroy;
+  }
   return CollideAction::Update;
 }
-
-ContactProbe::ContactProbe(box2d::Backend backend, const b2World& world)
-    : backend_(backend), rule_(world) {}
 
 ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally& errors) {
   ++pass_;
   Updates u;
   for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
-    if (rule_.action(world, *c) != CollideAction::Update) continue;
+    if (collide_action(world, *c) != CollideAction::Update) continue;
     const b2Fixture* fa = c->GetFixtureA();
     const b2Fixture* fb = c->GetFixtureB();
     ++u.contacts;
@@ -101,32 +97,34 @@ ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally
     ++u.triangles;
 
     Cache& cache = caches_[{fa, fb}];
-    if (cache.seen + 1 != pass_) cache.cache = PairState{};  // a new contact starts cold
+    const bool fresh = cache.seen + 1 != pass_;
+    if (fresh) cache.cache = PairState{};  // a new contact starts cold
     cache.seen = pass_;
 
-    // The plug-in's inputs: A as stored, B moved into A's body frame, in float.
+    // The plug-in's inputs: A as stored, B moved into A's body frame, in float. A's triangles are
+    // made again when its vertices differ from those they were made from.
     const b2PolygonShape& a = polygon(fa);
     const b2PolygonShape& b = polygon(fb);
+    const std::array<b2Vec2, 3> a_at = {a.m_vertices[0], a.m_vertices[1], a.m_vertices[2]};
+    if (fresh || !same_points(a_at, cache.a_at)) {
+      cache.a_at = a_at;
+      cache.a = Triangle<float>::make(to_vec(a_at[0]), to_vec(a_at[1]), to_vec(a_at[2]));
+      if (cache.a.ok()) cache.exact_a = widen(cache.a.triangle);
+    }
     const b2Transform b_in_a = b2MulT(fa->GetBody()->GetTransform(), fb->GetBody()->GetTransform());
-    const b2Vec2 vb[3] = {b2Mul(b_in_a, b.m_vertices[0]), b2Mul(b_in_a, b.m_vertices[1]),
-                          b2Mul(b_in_a, b.m_vertices[2])};
-    const TriangleOrError<float> ta = Triangle<float>::make(
-        to_vec(a.m_vertices[0]), to_vec(a.m_vertices[1]), to_vec(a.m_vertices[2]));
-    const TriangleOrError<float> tb =
-        Triangle<float>::make(to_vec(vb[0]), to_vec(vb[1]), to_vec(vb[2]));
-    if (!ta.ok() || !tb.ok()) {
+    const TriangleOrError<float> tb = Triangle<float>::make(to_vec(b2Mul(b_in_a, b.m_vertices[0])),
+                                                            to_vec(b2Mul(b_in_a, b.m_vertices[1])),
+                                                            to_vec(b2Mul(b_in_a, b.m_vertices[2])));
+    if (!cache.a.ok() || !tb.ok()) {
       errors.add(Status::Invalid, 0, 0, 0);  // the plug-in falls back to Box2D on this pair
       continue;
     }
+    const Triangle<float>& ta = cache.a.triangle;
     // The backend's depth, in float as the plug-in computes it (Lin–Canny warm-started from the
     // pair's cache; Box2D: the deepest point of its manifold).
     const Result<float> r = adapters::pair_function<float>(narrow_phase_of(backend_))(
-        ta.triangle, tb.triangle, Query<float>{Level::Depth}, &cache.cache);
-    auto widen = [](const Triangle<float>& t) {
-      return Triangle<double>::make(t.vertex(0).cast<double>(), t.vertex(1).cast<double>(),
-                                    t.vertex(2).cast<double>());
-    };
-    const TriangleOrError<double> xa = widen(ta.triangle);
+        ta, tb.triangle, Query<float>{Level::Depth}, &cache.cache);
+    const TriangleOrError<double>& xa = cache.exact_a;
     const TriangleOrError<double> xb = widen(tb.triangle);
     if (!xa.ok() || !xb.ok()) continue;  // valid in float, hence in double: never taken
     const double band = static_cast<double>(touching_tolerance<float>()) *

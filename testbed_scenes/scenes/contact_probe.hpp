@@ -19,6 +19,9 @@
 /// After a step, `measure_penetration` takes the exact depth (`sat` in double, B moved into A's
 /// frame in double) of every touching triangle pair: how far the cores overlap.
 
+#include <box2d/b2_math.h>
+
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
@@ -42,21 +45,10 @@ enum class CollideAction : std::uint8_t {
 
 /// Box2D 2.4.1's rule in `b2ContactManager::Collide`, read from outside the step: a contact is
 /// updated when at least one of its bodies is awake and not static and the two proxies' fat AABBs
-/// still overlap (filters never change in the scenes, so the filter check never fires).
-class CollideRule {
- public:
-  /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
-  explicit CollideRule(const b2World& world);
-
-  /// Records them again: fixtures were created, destroyed, enabled or disabled since.
-  void refresh(const b2World& world);
-
-  /// What the next step of `world` does with `contact`, one of `world`'s contacts.
-  CollideAction action(const b2World& world, const b2Contact& contact) const;
-
- private:
-  std::unordered_map<const b2Fixture*, int> proxy_;
-};
+/// still overlap (filters never change in the scenes, so the filter check never fires). The
+/// proxies are read from the fixtures as `Collide` reads them: fixtures made or destroyed between
+/// steps need no notice.
+CollideAction collide_action(const b2World& world, const b2Contact& contact);
 
 /// The exact separation of triangles `a` and `b` (`sat` in double; metres) as an `ErrorTally`
 /// reads it: minus the depth of a pair in contact, the distance of a pair apart by up to twice
@@ -66,12 +58,8 @@ double separation_as_tallied(const Triangle<double>& a, const Triangle<double>& 
 
 class ContactProbe {
  public:
-  /// Records the broad-phase proxy of every fixture of `world`: call once its bodies exist.
-  ContactProbe(box2d::Backend backend, const b2World& world);
-
-  /// `world`'s fixtures changed between steps (created, destroyed, enabled or disabled): its
-  /// proxies are recorded again.
-  void fixtures_changed(const b2World& world) { rule_.refresh(world); }
+  /// Checks `backend`'s depths against the exact reference.
+  explicit ContactProbe(box2d::Backend backend) : backend_(backend) {}
 
   /// What the next step's `Collide` will update.
   struct Updates {
@@ -91,11 +79,13 @@ class ContactProbe {
   };
   struct Cache {
     PairState cache;
-    std::uint64_t seen = 0;  ///< the last pass that met the pair's contact
+    std::uint64_t seen = 0;           ///< the last pass that met the pair's contact
+    std::array<b2Vec2, 3> a_at{};     ///< A's vertices `a` and `exact_a` were made from
+    TriangleOrError<float> a;         ///< A's triangle as the plug-in's input
+    TriangleOrError<double> exact_a;  ///< `a` widened, as the exact reference's input
   };
 
   box2d::Backend backend_;
-  CollideRule rule_;
   std::unordered_map<std::pair<const b2Fixture*, const b2Fixture*>, Cache, PairHash> caches_;
   std::uint64_t pass_ = 0;
 };

@@ -41,7 +41,7 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
   box2d::fix_internal_edges(world_->get());
   for (const Slider& s : build_.sliders) slider_start_x_.push_back(s.body->GetPosition().x);
   // Box2D's own contact answers as `b2CollidePolygons`, which is what the probe checks for `box2d`.
-  probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D), world_->get());
+  probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D));
 }
 
 WorldScene::~WorldScene() {
@@ -58,10 +58,7 @@ void WorldScene::check_manifolds() {
 }
 
 void WorldScene::step() {
-  if (build_.before_step) {
-    build_.before_step(steps_);
-    probe_->fixtures_changed(world_->get());
-  }
+  if (build_.before_step) build_.before_step(steps_);
   if (spawning_ && spawned_) {
     world_->get().DestroyBody(spawned_);
     spawned_ = nullptr;
