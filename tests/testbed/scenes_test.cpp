@@ -1,12 +1,15 @@
 // Every headless scene under every backend, briefly: it builds what the issue asks for, runs
 // without NaN, and every triangle pair is answered by the backend itself.
+#include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "dyop/sat.hpp"
 #include "scenes/contact_probe.hpp"
@@ -181,6 +184,56 @@ TEST(ContactProbe, CountsExactlyWhatCollideUpdates) {
               *after.plugin_evaluations - *before.plugin_evaluations)
         << "step " << i + 2;
   }
+}
+
+// Box2D's rule as `collide_action` reads it holds child by child: a box on a chain meets three of
+// its children (fat boxes overlapping); moved one metre along it, its fat box leaves the first
+// child's and still overlaps the two others': that contact alone is said to end, and the next
+// step ends it and keeps the two others.
+TEST(ContactProbe, CollideActionJudgesEachChildOfAChain) {
+  b2World world(b2Vec2(0.0f, -10.0f));
+  b2BodyDef ground_def;
+  b2Body* ground = world.CreateBody(&ground_def);
+  std::vector<b2Vec2> points;  // child i runs from x = i - 20 to i - 19
+  for (int i = 0; i <= 40; ++i) points.emplace_back(static_cast<float>(i) - 20.0f, 0.0f);
+  b2ChainShape chain;
+  chain.CreateChain(points.data(), static_cast<int32>(points.size()), points.front() - b2Vec2(1, 0),
+                    points.back() + b2Vec2(1, 0));
+  ground->CreateFixture(&chain, 0.0f);
+  b2BodyDef box_def;
+  box_def.type = b2_dynamicBody;
+  box_def.position.Set(5.5f, 0.45f);
+  b2Body* box = world.CreateBody(&box_def);
+  b2PolygonShape square;
+  square.SetAsBox(0.5f, 0.5f);
+  box->CreateFixture(&square, 1.0f);
+  world.Step(1.0f / 60.0f, 8, 3);  // the contacts are made
+  auto children = [&] {
+    std::vector<std::pair<int32, const b2Contact*>> out;
+    for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
+      const bool a_is_ground = c->GetFixtureA() == ground->GetFixtureList();
+      out.emplace_back(a_is_ground ? c->GetChildIndexA() : c->GetChildIndexB(), c);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto before = children();
+  ASSERT_EQ(before.size(), 3u);
+  EXPECT_EQ(before[0].first, 24);
+  EXPECT_EQ(before[2].first, 26);
+
+  box->SetTransform(b2Vec2(6.5f, 0.45f), 0.0f);
+  for (const auto& [child, contact] : before) {
+    EXPECT_EQ(collide_action(world, *contact),
+              child == 24 ? CollideAction::Destroy : CollideAction::Update)
+        << "child " << child;
+  }
+  world.Step(1.0f / 60.0f, 8, 3);
+  std::vector<int32> after;
+  for (const auto& [child, contact] : children()) after.push_back(child);
+  EXPECT_EQ(std::count(after.begin(), after.end(), 24), 0);
+  EXPECT_EQ(std::count(after.begin(), after.end(), 25), 1);
+  EXPECT_EQ(std::count(after.begin(), after.end(), 26), 1);
 }
 
 // The probe's exact reference skips the distance search of pairs apart well beyond the tally's
