@@ -14,12 +14,12 @@ namespace {
 
 // The bound: within 1e-12 of the pair's size, in double, wherever the pair is.
 constexpr double kExactRelTol = 1e-12;
-constexpr int kPairsPerClass = 10000;  // 10 classes: 100,000 pairs
+constexpr int kAgreementPairsPerClass = 10000;  // 10 classes: 100,000 pairs
 
 class ExactAgreement : public ::testing::TestWithParam<InputClass> {};
 
 TEST_P(ExactAgreement, SatAndDyopMatchTheRationalReferenceWithin1e12OfPairSize) {
-  const auto pairs = make_valid_pairs(GetParam(), kPairsPerClass, 7);
+  const auto pairs = make_valid_pairs(GetParam(), kAgreementPairsPerClass, 7);
   double worst_sat = 0;
   double worst_dyop = 0;
   int signs[3] = {0, 0, 0};  // penetrating, touching, apart

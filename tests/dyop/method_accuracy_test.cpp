@@ -14,7 +14,7 @@
 namespace dyop::workloads {
 namespace {
 
-constexpr int kPairsPerClass = 2000;
+constexpr int kAccuracyPairsPerClass = 2000;
 
 struct Figures {
   int pairs = 0;
@@ -32,7 +32,7 @@ template <class T>
 Figures measure(Method m, InputClass c, double& worst_depth_below_exact) {
   Figures f;
   worst_depth_below_exact = 0;
-  for (const RawPair& raw : make_valid_pairs(c, kPairsPerClass, 41)) {
+  for (const RawPair& raw : make_valid_pairs(c, kAccuracyPairsPerClass, 41)) {
     const RawPair p = std::is_same_v<T, float> ? rounded_to_float(raw) : raw;
     const auto t = build<T>(p);
     if (!t.a.ok() || !t.b.ok()) continue;  // a float-degenerate sliver is rejected, not solved
