@@ -51,6 +51,10 @@ bool valid_polygon(const b2PolygonShape& shape);
 // Distance from the shape's centroid to its farthest vertex (body frame).
 float bounding_radius(const b2PolygonShape& shape);
 
+// A shape's longest edge is at most twice its bounding radius, so at most twice a pair's
+// `radius_sum`; twice that again covers the float rounding of both measures.
+constexpr float size_bound_per_radius_sum = 4;
+
 // Where a pair is, for keeping, skipping and remembering its manifold.
 struct PairPose {
   b2Transform b_in_a;      // B's body frame given in A's
@@ -60,6 +64,8 @@ struct PairPose {
 
   // The motion bound's lever (`recycle_lever`).
   float lever() const { return recycle_lever(radius_sum, margin); }
+  // At least the longest edge of either shape (metres), for the solver's touching band (`InPlace`).
+  float size_bound() const { return size_bound_per_radius_sum * radius_sum; }
 };
 
 // Separation of two polygons along face `face` (A's edge `face`, or B's edge `face − a.m_count`;
@@ -307,9 +313,11 @@ struct PolygonCirclePair : ExactPair {
 template <int NA, int NB>
 [[gnu::always_inline]] inline Result<float> solve_counted(const b2PolygonShape& a,
                                                           const b2PolygonShape& b,
-                                                          const b2Transform& b_in_a,
+                                                          const PairPose& pose,
                                                           const ConvexQuery<float>& q) {
-  return dyop::detail::collide_polygons(Counted<InPlace, NA>(a), Counted<Placed, NB>(b, b_in_a), q);
+  const float bound = pose.size_bound();
+  return dyop::detail::collide_polygons(Counted<InPlace, NA>(a, bound),
+                                        Counted<Placed, NB>(b, pose.b_in_a, bound), q);
 }
 
 inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
@@ -317,23 +325,24 @@ inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const Pa
   // The commonest bodies: triangles, `SetAsBox` boxes, hexagons.
   switch (a.m_count << 4 | b.m_count) {
     case 0x34:
-      return solve_counted<3, 4>(a, b, pose.b_in_a, q);
+      return solve_counted<3, 4>(a, b, pose, q);
     case 0x36:
-      return solve_counted<3, 6>(a, b, pose.b_in_a, q);
+      return solve_counted<3, 6>(a, b, pose, q);
     case 0x43:
-      return solve_counted<4, 3>(a, b, pose.b_in_a, q);
+      return solve_counted<4, 3>(a, b, pose, q);
     case 0x44:
-      return solve_counted<4, 4>(a, b, pose.b_in_a, q);
+      return solve_counted<4, 4>(a, b, pose, q);
     case 0x46:
-      return solve_counted<4, 6>(a, b, pose.b_in_a, q);
+      return solve_counted<4, 6>(a, b, pose, q);
     case 0x63:
-      return solve_counted<6, 3>(a, b, pose.b_in_a, q);
+      return solve_counted<6, 3>(a, b, pose, q);
     case 0x64:
-      return solve_counted<6, 4>(a, b, pose.b_in_a, q);
+      return solve_counted<6, 4>(a, b, pose, q);
     case 0x66:
-      return solve_counted<6, 6>(a, b, pose.b_in_a, q);
+      return solve_counted<6, 6>(a, b, pose, q);
     default:
-      return dyop::detail::collide_polygons(InPlace(a), Placed(b, pose.b_in_a), q);
+      return dyop::detail::collide_polygons(InPlace(a, pose.size_bound()),
+                                            Placed(b, pose.b_in_a, pose.size_bound()), q);
   }
 }
 
@@ -341,7 +350,7 @@ inline Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, co
                                               ContactMemory&) const {
   const b2Vec2& center = pose.centroid_b_in_a;
   const Circle<float> circle{{center.x, center.y}, b.m_radius};
-  return dyop::detail::collide_polygon_circle(InPlace(a), circle, q);
+  return dyop::detail::collide_polygon_circle(InPlace(a, pose.size_bound()), circle, q);
 }
 
 }  // namespace dyop::box2d::detail

@@ -3,6 +3,8 @@
 // of separation), computing only what the query's level asks for. One set of helpers serves
 // every method.
 
+#include <cmath>
+
 #include "detail/axis_overlap.hpp"
 #include "detail/clip_manifold.hpp"
 #include "detail/closest_features.hpp"
@@ -31,6 +33,17 @@ inline Status status_of_overlap(T overlap, T band) {
                 static_cast<int>(Status::Penetrating) == 2);
   const int above = static_cast<int>(overlap >= -band) + static_cast<int>(overlap > band);
   return static_cast<Status>(above);
+}
+
+// The touching band to judge `overlap` by, with the shapes' sizes measured only where it matters:
+// `bound_band` (the band of an upper bound on the pair's scale, free to read) where `overlap` lies
+// beyond it, since `status_of_overlap` then gives the status the exact band gives; the exact band
+// (`exact_band()`, which measures) where it lies within, and wherever `needed` (another reader).
+// So the band returned is the exact one whenever the status is `Touching`.
+template <class T, class ExactBand>
+[[gnu::always_inline]] inline T status_band(T overlap, T bound_band, bool needed,
+                                            const ExactBand& exact_band) {
+  return needed || !(std::abs(overlap) > bound_band) ? exact_band() : bound_band;
 }
 
 template <class T>

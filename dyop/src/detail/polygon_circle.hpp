@@ -110,8 +110,10 @@ T segment_distance(const P& p, const Shifted<T, P>& v, int e, const Vec2<T>& c) 
 
 // `collide` for polygon `pa` and `circle`: `pa` a `Polygon<T>`, or any type with its members
 // `count`, `vertex`, `normal`, `next`, `size`, `input_edge` and `input_vertex` (the Box2D plug-in
-// reads a `b2PolygonShape` in place). Inline, so that a caller which reads a few fields of the
-// answer has them from registers, not from a `Result` written to memory and read back.
+// reads a `b2PolygonShape` in place). `size` is read once, whatever the status (measured:
+// docs/measurements.md, "The touching band measured where it matters"). Inline, so that a caller
+// which reads a few fields of the answer has them from registers, not from a `Result` written to
+// memory and read back.
 template <class T, class P>
 [[gnu::always_inline]] inline Result<T> collide_polygon_circle(const P& pa, const Circle<T>& circle,
                                                                const ConvexQuery<T>& q) {

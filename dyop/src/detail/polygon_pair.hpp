@@ -6,7 +6,8 @@
 //
 // A polygon-like type has a `Polygon<T>`'s members `count`, `vertex`, `normal`, `next`, `size`,
 // `input_vertex` and `input_edge`; `vertex(i)` and `normal(i)` are read once each (into the
-// frame), so they may compute the vertex or normal on each call.
+// frame), so they may compute the vertex or normal on each call. `size` is read only where the
+// touching band needs it when the type also has `size_bound` (see `size_bound`), so it may measure.
 
 #include <algorithm>
 #include <array>
@@ -16,6 +17,7 @@
 #include "detail/clip_manifold.hpp"
 #include "detail/fill_result.hpp"
 #include "detail/polygon_circle.hpp"
+#include "detail/validated_size.hpp"
 #include "dyop/convex_pair.hpp"
 
 namespace dyop::detail::polygon_pair {
@@ -33,14 +35,14 @@ struct Frame {
   Local<T> v[2];  // A's vertices (v[0]) and B's, local, read once from the shapes
   Local<T> n[2];  // their edges' unit outward normals, read once from the shapes
   int counts[2];  // A's vertex count, B's
-  T scale;        // the larger polygon's size: the unit of relative tolerances
+  T scale_bound;  // at least `scale()`, free to read (`size_bound`)
 
   [[gnu::always_inline]] Frame(const PA& pa_, const PB& pb_)
       : pa(pa_),
         pb(pb_),
         origin(pa_.vertex(0)),
         counts{pa_.count(), pb_.count()},
-        scale(std::max(pa_.size(), pb_.size())) {
+        scale_bound(std::max(size_bound(pa_), size_bound(pb_))) {
     for (int i = 0; i < counts[0]; ++i) {
       v[0][i] = pa.vertex(i) - origin;
       n[0][i] = pa.normal(i);
@@ -50,6 +52,8 @@ struct Frame {
       n[1][j] = pb.normal(j);
     }
   }
+  // The larger polygon's size: the unit of relative tolerances.
+  T scale() const { return std::max(pa.size(), pb.size()); }
   // The index of A's arrays (0) or B's (1).
   static int side(bool own_a) { return static_cast<int>(!own_a); }
   int axes() const { return counts[0] + counts[1]; }
@@ -382,14 +386,17 @@ template <class T, class PA, class PB>
                                                          const ConvexQuery<T>& q) {
   const Frame<T, PA, PB> f(pa, pb);
   const Overlaps<T> o(f);
-  const T band = touching_tolerance<T>() * f.scale;
   const AxisOverlap<T> least = o.at(o.least);
   int reference = reference_of(o, o.best_a, o.best_b, q.face_hysteresis);
   int answer_axis = o.least;
   bool no_usable_axis = false;
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
-  if ((q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
-      !(axis_allowed(f, q, o.least) && (reference == o.least || axis_allowed(f, q, reference)))) {
+  const bool ruled =
+      (q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
+      !(axis_allowed(f, q, o.least) && (reference == o.least || axis_allowed(f, q, reference)));
+  const T band = status_band(least.overlap, touching_tolerance<T>() * f.scale_bound, ruled,
+                             [&] { return touching_tolerance<T>() * f.scale(); });
+  if (ruled) {
     const UsableAxes u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
     if (u.any()) {

@@ -2,7 +2,7 @@
 // Internal: the size of a polygon given with its unit outward normals (`Polygon::size`, the
 // longest edge), as every reader of validated data measures it: `Polygon::from_validated`, and the
 // Box2D plug-in reading a `b2PolygonShape` in place. Measured along the tangents (the normals
-// turned left), with no square root.
+// turned left), with no square root. And a bound on it that costs nothing to read (`size_bound`).
 
 #include <algorithm>
 
@@ -20,6 +20,17 @@ inline T validated_size(int count, const Vertex& vertex, const Normal& normal) {
     size = std::max(size, length);
   }
   return size;
+}
+
+// At least polygon-like `p`'s `size()`, free to read: `p.size_bound()` where its type measures its
+// size only when asked (the Box2D plug-in's shapes read in place), else `p.size()` itself.
+template <class P>
+inline auto size_bound(const P& p) -> decltype(p.size_bound()) {
+  return p.size_bound();
+}
+template <class P, class... None>
+inline auto size_bound(const P& p, None...) -> decltype(p.size()) {
+  return p.size();
 }
 
 }  // namespace dyop::detail
