@@ -249,7 +249,8 @@ class ByValue {
 };
 
 // B as the Box2D plug-in reads a `b2PolygonShape`: its body frame's CCW vertices and normals,
-// turned by (c, s) and moved by `t` when read.
+// turned by (c, s) and moved by `t` when read, with a bound on its size four times above it (the
+// plug-in's is as loose: the solver then measures sizes only near the touching band).
 template <class T>
 class PlacedOnRead {
  public:
@@ -260,6 +261,7 @@ class PlacedOnRead {
   Vec2<T> normal(int i) const { return turn(body_.normal(i)); }
   int next(int i) const { return body_.next(i); }
   T size() const { return body_.size(); }
+  T size_bound() const { return 4 * body_.size(); }
   static int input_vertex(int i) { return i; }
   static int input_edge(int i) { return i; }
 

@@ -238,12 +238,12 @@ struct ContactMemory {
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
   PairState warm_start;
-  /// The face the last evaluation judged the pair on: 0..2 A's edges, 3..5 B's, -1 none yet
-  /// (`Config::warm_axis`).
+  /// The face the last evaluation judged the pair on: A's edges first (0 to A's vertex count − 1),
+  /// then B's; -1 none yet (`Config::warm_axis`).
   std::int8_t last_face = -1;
   Shapes shapes = Shapes::Unchecked;  ///< set when a world's contact is made, or by the first call
-  /// Triangles: the sum of the two shapes' bounding radii about their centroids (metres;
-  /// `Config::bounds_early_out`).
+  /// The sum of the two shapes' bounding radii about their centroids, a circle's its radius
+  /// (metres; `Config::bounds_early_out`, and a bound on the shapes' sizes for the exact solver).
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits, then
   /// B's); a world's contact finds them itself, a caller of `collide_polygons` sets them. For a
