@@ -242,7 +242,7 @@ struct ContactMemory {
   /// then B's; -1 none yet (`Config::warm_axis`).
   std::int8_t last_face = -1;
   Shapes shapes = Shapes::Unchecked;  ///< set when a world's contact is made, or by the first call
-  /// The sum of the two shapes' bounding radii about their centroids, a circle's its radius
+  /// The sum of the two shapes' bounding radii about their centroids (a circle's: its radius)
   /// (metres; `Config::bounds_early_out`, and a bound on the shapes' sizes for the exact solver).
   float radius_sum = 0;
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits, then
