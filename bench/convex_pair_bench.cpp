@@ -3,7 +3,8 @@
 // `SetAsBox` box, a hexagon or a circle against a triangle, <class> overlapping (penetrating) or
 // near (apart by less than the skins: a manifold with points), <who> `plugin`
 // (`collide_polygons` / `collide_polygon_and_circle` with `Backend::Dyop` and a `ContactMemory`
-// per pair, as a world's contact keeps one: the shapes looked at once) or `box2d`
+// per pair, as a world's contact keeps one: the shapes looked at once), `plugin-cold` (the same
+// without a `ContactMemory`: the shapes looked at on every call) or `box2d`
 // (`b2CollidePolygons` / `b2CollidePolygonAndCircle`). 32,768 distinct seeded pairs per class, so
 // that no branch predictor learns them; compare the two rows of a pair and class in one run.
 #include <benchmark/benchmark.h>
@@ -104,18 +105,20 @@ const PairSet& pairs_of(Shape s, Class c) {
   return out;
 }
 
-void bm_plugin(benchmark::State& state, Shape s, Class c) {
+// `cold`: no `ContactMemory` given.
+void bm_plugin(benchmark::State& state, Shape s, Class c, bool cold) {
   const PairSet& p = pairs_of(s, c);
   std::vector<box2d::ContactMemory> memory(p.triangle.size());
   b2Manifold manifold;
   std::size_t i = 0;
   for (auto _ : state) {
+    box2d::ContactMemory* m = cold ? nullptr : &memory[i];
     if (s == Shape::Circle) {
       box2d::collide_polygon_and_circle(&manifold, box2d::Backend::Dyop, p.triangle[i], p.xf_a[i],
-                                        p.circle[i], p.xf_b[i], &memory[i]);
+                                        p.circle[i], p.xf_b[i], m);
     } else {
       box2d::collide_polygons(&manifold, box2d::Backend::Dyop, p.triangle[i], p.xf_a[i],
-                              p.polygon[i], p.xf_b[i], &memory[i]);
+                              p.polygon[i], p.xf_b[i], m);
     }
     benchmark::DoNotOptimize(manifold);
     if (++i == p.triangle.size()) i = 0;
@@ -145,7 +148,8 @@ int main(int argc, char** argv) {
   for (Shape s : {Shape::Box, Shape::Hexagon, Shape::Circle}) {
     for (Class c : {Class::Overlapping, Class::Near}) {
       const std::string stem = std::string("BM_convex/") + name(s) + "/" + name(c);
-      benchmark::RegisterBenchmark((stem + "/plugin").c_str(), bm_plugin, s, c);
+      benchmark::RegisterBenchmark((stem + "/plugin").c_str(), bm_plugin, s, c, false);
+      benchmark::RegisterBenchmark((stem + "/plugin-cold").c_str(), bm_plugin, s, c, true);
       benchmark::RegisterBenchmark((stem + "/box2d").c_str(), bm_box2d, s, c);
     }
   }
