@@ -1,5 +1,5 @@
 // libFuzzer target for `collide` on the convex pairs beyond two triangles: polygon–polygon (3 to 8
-// vertices each) and polygon–circle, in float or double.
+// vertices each) and polygon–circle, A a segment where it has 2 vertices, in float or double.
 //
 // Format: byte 0: bit 0 set: float, else double; bit 1 set: grid encoding, else raw (as
 // fuzz_input.hpp's, over this input's numbers); bit 2 set: B is a circle. Byte 1: A's vertex count
@@ -9,12 +9,13 @@
 // Missing bytes read as zero.
 //
 // What it asserts, besides "no crash, no sanitizer report":
-// - `Polygon<T>::make` and `Circle<T>::check` decide every input, and `make` agrees with `check`;
+// - `Polygon<T>::make` (`Segment<T>::make` for 2 vertices) and `Circle<T>::check` decide every
+//   input, and `make` agrees with `check`;
 // - a valid pair is answered at every level, never `Invalid`, every field the level promises
 //   finite, also with the masks, which change no status;
 // - the separation is within the exact bound (double 1e-12, float 1e-5 of the pair's size) of the
 //   exact rational reference, and the status is the exact sign's outside the touching band;
-// - the answer does not depend on A's winding (bit for bit).
+// - the answer does not depend on A's winding (bit for bit; a segment has none).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -98,9 +99,9 @@ bool same_bits(T x, T y) {
 }
 
 // Every check on a valid pair; `solve(a, query)` answers it with A given as `a`.
-template <class T, class Raw, class Solve>
-void check_pair(const ConvexInput& in, const Raw& raw, const Polygon<T>& a,
-                const Polygon<T>& a_reversed, T shape_size, Solve solve) {
+template <class T, class A, class Raw, class Solve>
+void check_pair(const ConvexInput& in, const Raw& raw, const A& a, const A& a_reversed,
+                T shape_size, Solve solve) {
   Status plain = Status::Invalid;
   for (Level level : all_levels) {
     ConvexQuery<T> q{level};
@@ -132,30 +133,39 @@ void check_pair(const ConvexInput& in, const Raw& raw, const Polygon<T>& a,
   }
 }
 
-template <class T>
-void run(const ConvexInput& in) {
-  const auto va = workloads::vertices_in<T>(in.a);
-  const PolygonOrError<T> a = Polygon<T>::make(va.data(), in.a.count);
-  require(a.error == Polygon<T>::check(va.data(), in.a.count), "make and check disagree on A", in);
+// A validated (`a`, and `a_reversed` in the other winding: itself for a segment) against B.
+template <class T, class A>
+void run_against_b(const ConvexInput& in, const A& a, const A& a_reversed) {
   if (in.circle) {
     const Circle<T> disk = workloads::build<T>(in.disk);
-    if (!a.ok() || Circle<T>::check(disk.center, disk.radius) != ConvexError::None) return;
-    const PolygonOrError<T> ra = workloads::build<T>(workloads::reversed(in.a));
-    require(ra.ok(), "A refused in the other winding", in);
-    check_pair<T>(
-        in, workloads::RawCirclePair{in.a, in.disk}, a.polygon, ra.polygon,
-        std::max(a.polygon.size(), disk.radius),
-        [&](const Polygon<T>& pa, const ConvexQuery<T>& q) { return collide(pa, disk, q); });
+    if (Circle<T>::check(disk.center, disk.radius) != ConvexError::None) return;
+    check_pair<T>(in, workloads::RawCirclePair{in.a, in.disk}, a, a_reversed,
+                  std::max(a.size(), disk.radius),
+                  [&](const A& pa, const ConvexQuery<T>& q) { return collide(pa, disk, q); });
     return;
   }
   const PolygonOrError<T> b = workloads::build<T>(in.b);
-  if (!a.ok() || !b.ok()) return;
+  if (!b.ok()) return;
+  check_pair<T>(in, workloads::RawPolygonPair{in.a, in.b}, a, a_reversed,
+                std::max(a.size(), b.polygon.size()),
+                [&](const A& pa, const ConvexQuery<T>& q) { return collide(pa, b.polygon, q); });
+}
+
+template <class T>
+void run(const ConvexInput& in) {
+  const auto va = workloads::vertices_in<T>(in.a);
+  if (in.a.count == 2) {
+    const SegmentOrError<T> s = Segment<T>::make(va[0], va[1]);
+    require(s.error == Segment<T>::check(va[0], va[1]), "make and check disagree on A", in);
+    if (s.ok()) run_against_b<T>(in, s.segment, s.segment);
+    return;
+  }
+  const PolygonOrError<T> a = Polygon<T>::make(va.data(), in.a.count);
+  require(a.error == Polygon<T>::check(va.data(), in.a.count), "make and check disagree on A", in);
+  if (!a.ok()) return;
   const PolygonOrError<T> ra = workloads::build<T>(workloads::reversed(in.a));
   require(ra.ok(), "A refused in the other winding", in);
-  check_pair<T>(
-      in, workloads::RawPolygonPair{in.a, in.b}, a.polygon, ra.polygon,
-      std::max(a.polygon.size(), b.polygon.size()),
-      [&](const Polygon<T>& pa, const ConvexQuery<T>& q) { return collide(pa, b.polygon, q); });
+  run_against_b<T>(in, a.polygon, ra.polygon);
 }
 
 }  // namespace

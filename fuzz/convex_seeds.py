@@ -48,7 +48,12 @@ SEEDS = {
     "circle_on_vertex": seed(box(0, 0, 4, 4), circle=(4, 4, 1)),
     "circle_touching_face": seed(box(0, 0, 4, 4), circle=(2, 6, 2)),
     "circle_tangent_at_corner": seed(box(0, 0, 4, 4), circle=(7, 8, 5)),
-    "too_few_vertices": seed([(0, 0), (4, 0)], box(0, 0, 1, 1)),
+    "too_few_vertices": seed([(0, 0)], box(0, 0, 1, 1)),
+    "segment_under_box": seed([(8, 0), (0, 0)], box(2, -1, 4, 3)),
+    "segment_end_at_box": seed([(0, 0), (4, 0)], box(4, -2, 6, 2)),
+    "one_sided_segment": seed([(8, 0), (0, 0)], box(2, -3, 4, 1), masks=(0b10, 0b11, 0, 0)),
+    "segment_circle": seed([(0, 0), (8, 0)], circle=(4, 1, 2)),
+    "circle_past_segment_end": seed([(0, 0), (8, 0)], circle=(9, 1, 2), masks=(0b10, 0b10, 0, 0)),
     "collinear": seed([(0, 0), (2, 0), (4, 0), (4, 4)], box(0, 0, 1, 1)),
     "reflex": seed([(0, 0), (4, 0), (2, 1), (4, 4), (0, 4)], box(0, 0, 1, 1)),
 }

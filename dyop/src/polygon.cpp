@@ -134,6 +134,31 @@ Polygon<T> Polygon<T>::from_validated(const Vec2<T>* ccw, const Vec2<T>* normals
 }
 
 template <class T>
+ConvexError Segment<T>::check(const Vec2<T>& p0, const Vec2<T>& p1) {
+  const Vec2<T> both[2] = {p0, p1};
+  if (const ConvexError e = check_coordinates(both, 2); e != ConvexError::None) return e;
+  if (p0 == p1) return ConvexError::RepeatedVertex;
+  if (!(Vec2<T>(p1 - p0).squaredNorm() >= min_size<T>() * min_size<T>())) {
+    return ConvexError::TooSmall;
+  }
+  return ConvexError::None;
+}
+
+template <class T>
+SegmentOrError<T> Segment<T>::make(const Vec2<T>& p0, const Vec2<T>& p1) {
+  SegmentOrError<T> out;
+  out.error = check(p0, p1);
+  if (out.error != ConvexError::None) return out;
+  Segment<T>& s = out.segment;
+  s.v_ = {p0, p1};
+  const Vec2<T> e = p1 - p0;
+  s.size_ = e.norm();
+  s.n_[0] = right_perp(e) / s.size_;
+  s.n_[1] = -s.n_[0];
+  return out;
+}
+
+template <class T>
 ConvexError Circle<T>::check(const Vec2<T>& center, T radius) {
   const Vec2<T> both[2] = {center, Vec2<T>(radius, 0)};
   if (const ConvexError e = check_coordinates(both, 2); e != ConvexError::None) return e;
@@ -141,6 +166,8 @@ ConvexError Circle<T>::check(const Vec2<T>& center, T radius) {
   return ConvexError::None;
 }
 
+template class Segment<float>;
+template class Segment<double>;
 template class Polygon<float>;
 template class Polygon<double>;
 template struct Circle<float>;

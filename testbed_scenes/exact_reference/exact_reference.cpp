@@ -77,6 +77,10 @@ Z twice_area(const ZPolygon& q) {
   return sum;
 }
 
+// True when the caller's order of `q` is counter-clockwise; a segment's (two vertices) is taken as
+// such: its edge 0's outward normal is to the right of vertex 0 → vertex 1.
+bool counter_clockwise(const ZPolygon& q) { return q.size() == 2 || sgn(twice_area(q)) > 0; }
+
 // The caller's vertices in units, in the caller's order.
 ZPolygon on_grid(const RawPolygon& p, const Grid& grid) {
   ZPolygon q;
@@ -270,7 +274,8 @@ ExactAnswer exact_separation(const RawCirclePair& p) {
     if (i == 0 || less(nearest_line, s)) nearest_line = std::move(s);
   }
   ExactAnswer out;
-  if (!outside) {
+  // A segment (two vertices) has no inside: a centre on its line is at its distance from it.
+  if (!outside && a.size() > 2) {
     // Inside: the circle reaches −nearest_line + r past the nearest edge; r > 0, so penetrating.
     out.sign = -1;
     out.separation =
@@ -289,7 +294,7 @@ double exact_edge_overlap(const RawPolygonPair& p, bool of_a, int edge) {
   const Grid grid = grid_of(p);
   const ZPolygon own = on_grid(of_a ? p.a : p.b, grid);
   const ZPolygon other = on_grid(of_a ? p.b : p.a, grid);
-  const bool ccw = sgn(twice_area(own)) > 0;
+  const bool ccw = counter_clockwise(own);
   const auto i = static_cast<std::size_t>(edge);
   return nearest_double(grid.metres(value(edge_overlap(own, i, ccw, other))));
 }
@@ -302,7 +307,7 @@ double exact_edge_overlap(const RawPair& p, bool of_a, int edge) {
 double exact_edge_overlap(const RawCirclePair& p, int edge) {
   const Grid grid = grid_of(p);
   const ZPolygon own = on_grid(p.a, grid);
-  const bool ccw = sgn(twice_area(own)) > 0;
+  const bool ccw = counter_clockwise(own);
   const auto i = static_cast<std::size_t>(edge);
   const ZVec n = outward_normal(own, i, ccw);
   // The circle's deepest point along −n is its centre less r along n: r + n·(own_i − c) / |n|.

@@ -1,7 +1,8 @@
 #pragma once
 // The exact reference: penetration depth and distance of two convex polygons (two triangles,
-// or 3 to 8 vertices each) and of a polygon and a circle, computed exactly (GMP) on the given
-// doubles, rounded once at the end.
+// or 3 to 8 vertices each; A a segment where it has 2, a polygon of its two sides) and of a
+// polygon (or segment) and a circle, computed exactly (GMP) on the given doubles, rounded once at
+// the end.
 //
 // Every double of a pair is an integer times a power of two; with the least such power of the pair
 // as the unit, every coordinate is an exact integer, and every product, sum and comparison below

@@ -30,13 +30,9 @@ RawPolygon rewound(const RawPolygon& p) {
 RawPolygonPair rewound(const RawPolygonPair& p) { return {rewound(p.a), rewound(p.b)}; }
 RawCirclePair rewound(const RawCirclePair& p) { return {rewound(p.a), p.b}; }
 
-template <class T>
-Result<T> solve(const RawPolygonPair& p, const ConvexQuery<T>& q) {
-  return collide(workloads::build<T>(p.a).polygon, workloads::build<T>(p.b).polygon, q);
-}
-template <class T>
-Result<T> solve(const RawCirclePair& p, const ConvexQuery<T>& q) {
-  return collide(workloads::build<T>(p.a).polygon, workloads::build<T>(p.b), q);
+template <class T, class Pair>
+Result<T> solve(const Pair& p, const ConvexQuery<T>& q) {
+  return workloads::collide_raw(p, q);
 }
 
 template <class T, class Pair>
@@ -85,6 +81,11 @@ void run_precision(const StressOptions& o, std::vector<ConvexStressRecord>& reco
                                  workloads::make_polygon_pairs(c, o.pairs, o.seed, precision)));
     records.push_back(measure<T>(ConvexFamily::PolygonCircle, c,
                                  workloads::make_circle_pairs(c, o.pairs, o.seed, precision)));
+    records.push_back(measure<T>(ConvexFamily::SegmentPolygon, c,
+                                 workloads::make_segment_pairs(c, o.pairs, o.seed, precision)));
+    records.push_back(
+        measure<T>(ConvexFamily::SegmentCircle, c,
+                   workloads::make_segment_circle_pairs(c, o.pairs, o.seed, precision)));
     progress << "dyop stress: convex pairs, " << workloads::name(c) << ", "
              << workloads::name(precision) << " done\n";
   }
@@ -93,7 +94,17 @@ void run_precision(const StressOptions& o, std::vector<ConvexStressRecord>& reco
 }  // namespace
 
 const char* name(ConvexFamily f) {
-  return f == ConvexFamily::Polygons ? "polygon-polygon" : "polygon-circle";
+  switch (f) {
+    case ConvexFamily::Polygons:
+      return "polygon-polygon";
+    case ConvexFamily::PolygonCircle:
+      return "polygon-circle";
+    case ConvexFamily::SegmentPolygon:
+      return "segment-polygon";
+    case ConvexFamily::SegmentCircle:
+      return "segment-circle";
+  }
+  return "unknown";
 }
 
 std::vector<ConvexStressRecord> run_convex_stress(const StressOptions& options,

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// `dyop stress`'s convex part: the exact solver (`dyop::collide`) on the pairs beyond two
-/// triangles — polygon–polygon (3 to 8 vertices, `SetAsBox` boxes among them) and polygon–circle —
+/// triangles — polygon–polygon (3 to 8 vertices, `SetAsBox` boxes among them), polygon–circle,
+/// segment–polygon and segment–circle (a Box2D edge against either) —
 /// per input class (`workloads/convex_classes.hpp`) and precision, against the exact rational
 /// reference, with the figures of `experiments/stress.hpp`: error / pair size, misclassified
 /// status outside the band 4·`touching_tolerance`·size, NaN/inf, and the winding check (A's and
@@ -16,10 +17,10 @@
 
 namespace dyop::experiments {
 
-/// The two pair families beyond two triangles.
-enum class ConvexFamily : std::uint8_t { Polygons, PolygonCircle };
+/// The pair families beyond two triangles.
+enum class ConvexFamily : std::uint8_t { Polygons, PolygonCircle, SegmentPolygon, SegmentCircle };
 
-/// "polygon-polygon", "polygon-circle".
+/// "polygon-polygon", "polygon-circle", "segment-polygon", "segment-circle".
 const char* name(ConvexFamily f);
 
 /// One family on one class in one precision.
@@ -35,7 +36,7 @@ struct ConvexStressRecord {
   int winding = 0;        ///< pairs whose separation moved beyond `exact_bound` when rewound
 };
 
-/// Runs both families on every convex class in the precisions asked for (`options.pairs` pairs
+/// Runs every family on every convex class in the precisions asked for (`options.pairs` pairs
 /// each); one progress line per family, class and precision on `progress`.
 std::vector<ConvexStressRecord> run_convex_stress(const StressOptions& options,
                                                   std::ostream& progress);

@@ -94,6 +94,23 @@ RawPolygon thin_convex(Random& g, const V& centre) {
   return p;
 }
 
+// A segment between two of `p`'s vertices (a chord, or one of its edges), either way round: a
+// segment of about the polygon's size, inside it.
+RawPolygon chord_of(Random& g, const RawPolygon& p) {
+  const int i = g.below(p.count);
+  const int j = (i + 1 + g.below(p.count - 1)) % p.count;
+  RawPolygon s;
+  s.count = 2;
+  s.v[0] = p.v[static_cast<std::size_t>(i)];
+  s.v[1] = p.v[static_cast<std::size_t>(j)];
+  return s;
+}
+
+// A of a pair: `a` itself, or a chord of it for a segment pair.
+RawPolygon a_shape(Random& g, const RawPolygon& a, bool segment) {
+  return segment ? chord_of(g, a) : a;
+}
+
 RawCircle random_circle(Random& g, const V& centre, double size) {
   const double r = size * g.uniform(0.3, 1.0);
   return {centre, r};
@@ -112,33 +129,27 @@ auto random_b(Random& g, const V& centre, double size) {
   }
 }
 
-// A of size 1 about the origin, B of size 0.3 to 1.5 about a point within a unit of it.
+// A of size 1 about the origin (a chord of it for a segment pair), B of size 0.3 to 1.5 about a
+// point within a unit of it.
 template <class Pair>
-Pair convex_general(Random& g) {
-  const RawPolygon a = random_convex(g, V::Zero(), 1.0);
+Pair convex_general(Random& g, bool segment) {
+  const RawPolygon a = a_shape(g, random_convex(g, V::Zero(), 1.0), segment);
   const V centre = g.point_in(-1, 1);
   const double size = g.uniform(0.3, 1.5);
   return {a, random_b<Pair>(g, centre, size)};
 }
 
-Status status_in_double(const RawPolygonPair& p) {
-  const PolygonOrError<double> a = build<double>(p.a);
-  const PolygonOrError<double> b = build<double>(p.b);
-  if (!a.ok() || !b.ok()) return Status::Invalid;
-  return collide(a.polygon, b.polygon, ConvexQuery<double>{Level::Overlap}).status;
-}
-
-Status status_in_double(const RawCirclePair& p) {
-  const PolygonOrError<double> a = build<double>(p.a);
-  if (!a.ok() || !valid_in<double>(p.b)) return Status::Invalid;
-  return collide(a.polygon, build<double>(p.b), ConvexQuery<double>{Level::Overlap}).status;
+template <class Pair>
+Status status_in_double(const Pair& p) {
+  if (!valid_in<double>(p)) return Status::Invalid;
+  return collide_raw(p, ConvexQuery<double>{Level::Overlap}).status;
 }
 
 // The first general pair with status `want` whose boxes meet.
 template <class Pair>
-Pair convex_general_where(Random& g, Status want) {
+Pair convex_general_where(Random& g, Status want, bool segment) {
   for (;;) {
-    const Pair p = convex_general<Pair>(g);
+    const Pair p = convex_general<Pair>(g, segment);
     if (status_in_double(p) == want && boxes_meet(bounding_box(p.a), bounding_box(p.b))) return p;
   }
 }
@@ -168,8 +179,8 @@ RawPolygon shrunk_about(const RawPolygon& p, const V& about, double k) {
 }
 
 template <class Pair>
-Pair convex_scaled(Random& g) {
-  Pair p = convex_general<Pair>(g);
+Pair convex_scaled(Random& g, bool segment) {
+  Pair p = convex_general<Pair>(g, segment);
   if (g.below(4) == 0) {
     const double k = g.log_uniform(-3, 0);
     if constexpr (kIsCirclePair<Pair>) {
@@ -183,24 +194,25 @@ Pair convex_scaled(Random& g) {
 }
 
 template <class Pair>
-Pair convex_far(Random& g, Precision precision) {
-  const Pair p = convex_general<Pair>(g);
+Pair convex_far(Random& g, Precision precision, bool segment) {
+  const Pair p = convex_general<Pair>(g, segment);
   const double top = std::log10(max_offset(precision));
   const double distance = g.log_uniform(top - 3, top);
   return convex_moved(p, 1.0, distance * g.unit_vector());
 }
 
 template <class Pair>
-Pair convex_sliver(Random& g) {
+Pair convex_sliver(Random& g, bool segment) {
   if constexpr (kIsCirclePair<Pair>) {
     const RawPolygon a = thin_convex(g, g.point_in(-0.3, 0.3));
     const V centre = g.point_in(-1, 1);
     const double size = g.uniform(0.3, 1.5);
-    return {a, random_circle(g, centre, size)};
+    return {a_shape(g, a, segment), random_circle(g, centre, size)};
   } else {
     const RawPolygon a = random_convex(g, V::Zero(), 1.0);
     Pair p{a, thin_convex(g, g.point_in(-1, 1))};
     if (g.coin()) p.a = thin_convex(g, g.point_in(-0.3, 0.3));
+    p.a = a_shape(g, p.a, segment);
     return p;
   }
 }
@@ -278,9 +290,10 @@ V quarter_turns(V v, int turns, const V& shift) {
 }
 
 // Exactly touching in double and in float: integer or dyadic coordinates where the shapes meet,
-// then quarter-turns and an integer shift (both exact).
+// then quarter-turns and an integer shift (both exact). A segment pair's A is the top edge, B on
+// its front, or (half the time, the edge given the other way round) on its back.
 template <class Pair>
-Pair convex_touching(Random& g) {
+Pair convex_touching(Random& g, bool segment) {
   const double y = std::round(g.uniform(-4, 4));
   const double x0 = dyadic(g.uniform(-1, 0));
   const double x1 = dyadic(g.uniform(0.5, 1.5));
@@ -294,7 +307,13 @@ Pair convex_touching(Random& g) {
   const int turns = g.below(4);
   const V shift = g.point_in(-8, 8).array().round().matrix();
   for (V& v : p.a.v) v = quarter_turns(v, turns, shift);
-  g.shuffle(p.a.v.data(), p.a.count);
+  if (segment) {
+    p.a.count = 2;  // v[0] = (x1, y), v[1] = (x0, y): the front up, before the turns
+    std::fill(p.a.v.begin() + 2, p.a.v.end(), V::Zero());
+    if (g.coin()) std::swap(p.a.v[0], p.a.v[1]);
+  } else {
+    g.shuffle(p.a.v.data(), p.a.count);
+  }
   if constexpr (kIsCirclePair<Pair>) {
     p.b.center = quarter_turns(p.b.center, turns, shift);
   } else {
@@ -318,9 +337,23 @@ V point_of(Random& g, const RawPolygon& p) {
   }
 }
 
+// One shape inside the other. A segment pair: a chord of a polygon shrunk inside B, or the
+// circle's centre on the segment (a quarter of the time on an end).
 template <class Pair>
-Pair convex_nested(Random& g) {
+Pair convex_nested(Random& g, bool segment) {
   const RawPolygon outer = random_convex(g, V::Zero(), 1.0);
+  if (segment) {
+    if constexpr (kIsCirclePair<Pair>) {
+      const RawPolygon s = chord_of(g, outer);
+      const double t = g.below(4) == 0 ? 0.0 : g.unit();
+      const double r = g.uniform(0.05, 1.5);
+      return {s, RawCircle{s.v[0] + t * (s.v[1] - s.v[0]), r}};
+    } else {
+      // About an inner point: the chord then lies inside B, off its outline.
+      const RawPolygon inner = shrunk_about(outer, vertex_mean(outer), g.uniform(0.05, 0.95));
+      return {chord_of(g, inner), outer};
+    }
+  }
   if constexpr (kIsCirclePair<Pair>) {
     // The centre on a vertex a quarter of the time, otherwise a weighted mean of the vertices.
     V centre = outer.v[static_cast<std::size_t>(g.below(outer.count))];
@@ -345,36 +378,38 @@ Pair convex_nested(Random& g) {
   }
 }
 
+// `segment`: A is a segment (2 vertices).
 template <class Pair>
-Pair make_one_convex(ConvexClass c, Random& g, Precision precision) {
+Pair make_one_convex(ConvexClass c, Random& g, Precision precision, bool segment) {
   switch (c) {
     case ConvexClass::Overlapping:
-      return convex_general_where<Pair>(g, Status::Penetrating);
+      return convex_general_where<Pair>(g, Status::Penetrating, segment);
     case ConvexClass::Separated:
-      return convex_general_where<Pair>(g, Status::Separated);
+      return convex_general_where<Pair>(g, Status::Separated, segment);
     case ConvexClass::Scale:
-      return convex_scaled<Pair>(g);
+      return convex_scaled<Pair>(g, segment);
     case ConvexClass::Far:
-      return convex_far<Pair>(g, precision);
+      return convex_far<Pair>(g, precision, segment);
     case ConvexClass::Sliver:
-      return convex_sliver<Pair>(g);
+      return convex_sliver<Pair>(g, segment);
     case ConvexClass::Touching:
-      return convex_touching<Pair>(g);
+      return convex_touching<Pair>(g, segment);
     case ConvexClass::Nested:
-      return convex_nested<Pair>(g);
+      return convex_nested<Pair>(g, segment);
   }
-  return convex_general<Pair>(g);
+  return convex_general<Pair>(g, segment);
 }
 
 template <class Pair>
-std::vector<Pair> draw_convex(ConvexClass c, int count, std::uint64_t seed, Precision precision) {
-  // Seeds apart from the triangle classes' and between the two kinds of pair.
-  const std::uint64_t stream = kIsCirclePair<Pair> ? 200 : 100;
+std::vector<Pair> draw_convex(ConvexClass c, int count, std::uint64_t seed, Precision precision,
+                              bool segment) {
+  // Seeds apart from the triangle classes' and between the four kinds of pair.
+  const std::uint64_t stream = (kIsCirclePair<Pair> ? 200 : 100) + (segment ? 200 : 0);
   Random g(seed * 1000003u + stream + static_cast<std::uint64_t>(c));
   std::vector<Pair> out;
   out.reserve(static_cast<std::size_t>(count));
   while (static_cast<int>(out.size()) < count) {
-    const Pair p = rounded_to(precision, make_one_convex<Pair>(c, g, precision));
+    const Pair p = rounded_to(precision, make_one_convex<Pair>(c, g, precision, segment));
     const bool valid = precision == Precision::Float ? valid_in<float>(p) : valid_in<double>(p);
     if (valid) out.push_back(p);
   }
@@ -405,12 +440,22 @@ const char* name(ConvexClass c) {
 
 std::vector<RawPolygonPair> make_polygon_pairs(ConvexClass c, int count, std::uint64_t seed,
                                                Precision precision) {
-  return draw_convex<RawPolygonPair>(c, count, seed, precision);
+  return draw_convex<RawPolygonPair>(c, count, seed, precision, false);
 }
 
 std::vector<RawCirclePair> make_circle_pairs(ConvexClass c, int count, std::uint64_t seed,
                                              Precision precision) {
-  return draw_convex<RawCirclePair>(c, count, seed, precision);
+  return draw_convex<RawCirclePair>(c, count, seed, precision, false);
+}
+
+std::vector<RawPolygonPair> make_segment_pairs(ConvexClass c, int count, std::uint64_t seed,
+                                               Precision precision) {
+  return draw_convex<RawPolygonPair>(c, count, seed, precision, true);
+}
+
+std::vector<RawCirclePair> make_segment_circle_pairs(ConvexClass c, int count, std::uint64_t seed,
+                                                     Precision precision) {
+  return draw_convex<RawCirclePair>(c, count, seed, precision, true);
 }
 
 }  // namespace dyop::workloads

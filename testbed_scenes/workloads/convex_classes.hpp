@@ -48,4 +48,15 @@ std::vector<RawPolygonPair> make_polygon_pairs(ConvexClass c, int count, std::ui
 std::vector<RawCirclePair> make_circle_pairs(ConvexClass c, int count, std::uint64_t seed,
                                              Precision precision);
 
+/// `count` segment–polygon pairs of class `c` (A a segment of 2 vertices: a chord of the class's
+/// polygon A, either way round; `Touching`: B on A's top edge, front or back; `Nested`: a chord of
+/// a polygon shrunk inside B), as `make_polygon_pairs`.
+std::vector<RawPolygonPair> make_segment_pairs(ConvexClass c, int count, std::uint64_t seed,
+                                               Precision precision);
+
+/// `count` segment–circle pairs of class `c`, as `make_segment_pairs` (`Nested`: the circle's
+/// centre on the segment, a quarter of the time on an end).
+std::vector<RawCirclePair> make_segment_circle_pairs(ConvexClass c, int count, std::uint64_t seed,
+                                                     Precision precision);
+
 }  // namespace dyop::workloads

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// The convex pairs beyond two triangles as the caller gives them: polygon–polygon and
-/// polygon–circle (world coordinates, any winding, not yet validated).
+/// polygon–circle, A a segment where it has 2 vertices (world coordinates, any winding, not yet
+/// validated).
 
+#include "dyop/convex_pair.hpp"
 #include "workloads/raw_circle.hpp"
 #include "workloads/raw_polygon.hpp"
 
@@ -29,6 +31,22 @@ bool valid_in(const RawPolygonPair& p) {
 template <class T>
 bool valid_in(const RawCirclePair& p) {
   return valid_in<T>(p.a) && valid_in<T>(p.b);
+}
+
+/// `collide` on the pair in precision T (A a `Segment` when it has 2 vertices); both shapes must be
+/// valid there (`valid_in<T>`).
+template <class T>
+Result<T> collide_raw(const RawPolygonPair& p, const ConvexQuery<T>& q) {
+  const Polygon<T> b = build<T>(p.b).polygon;
+  if (p.a.count == 2) return collide(build_segment<T>(p.a).segment, b, q);
+  return collide(build<T>(p.a).polygon, b, q);
+}
+/// The same for a polygon (or segment) and a circle.
+template <class T>
+Result<T> collide_raw(const RawCirclePair& p, const ConvexQuery<T>& q) {
+  const Circle<T> b = build<T>(p.b);
+  if (p.a.count == 2) return collide(build_segment<T>(p.a).segment, b, q);
+  return collide(build<T>(p.a).polygon, b, q);
 }
 
 /// The bounding box of `p`'s vertices.

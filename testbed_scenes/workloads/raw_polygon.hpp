@@ -10,7 +10,8 @@
 
 namespace dyop::workloads {
 
-/// 3 to `max_polygon_vertices` vertices as the caller gives them: world coordinates, any winding.
+/// 3 to `max_polygon_vertices` vertices as the caller gives them: world coordinates, any winding;
+/// or 2, a segment (`Segment`: from `v[0]` to `v[1]`, its front to the right of that direction).
 struct RawPolygon {
   /// The first `count` are the vertices; the rest are zero (Eigen leaves a vector it is not
   /// given uninitialised).
@@ -48,10 +49,18 @@ PolygonOrError<T> build(const RawPolygon& p) {
   return Polygon<T>::make(v.data(), p.count);
 }
 
-/// True when `Polygon<T>::make` accepts `p`.
+/// `p`, of 2 vertices, validated as a segment in precision T.
+template <class T>
+SegmentOrError<T> build_segment(const RawPolygon& p) {
+  const auto v = vertices_in<T>(p);
+  return Segment<T>::make(v[0], v[1]);
+}
+
+/// True when `Polygon<T>::make` accepts `p` (`Segment<T>::make`, for 2 vertices).
 template <class T>
 bool valid_in(const RawPolygon& p) {
   const auto v = vertices_in<T>(p);
+  if (p.count == 2) return Segment<T>::check(v[0], v[1]) == ConvexError::None;
   return Polygon<T>::check(v.data(), p.count) == ConvexError::None;
 }
 

@@ -1,17 +1,20 @@
 #pragma once
 /// \file
 /// Exact penetration depth, distance and contact manifold of a convex polygon against a convex
-/// polygon (3 to 8 vertices each) or against a circle: the pairs beyond two triangles, answered
-/// exactly as `sat` answers triangles (DyOP-PD stays the method for triangle pairs).
+/// polygon (3 to 8 vertices each) or against a circle, and of a segment (a Box2D edge) against
+/// either: the pairs beyond two triangles, answered exactly as `sat` answers triangles (DyOP-PD
+/// stays the method for triangle pairs).
 ///
 /// Algorithm: the Minkowski difference of two convex polygons has as edge normals exactly A's edge
 /// normals and B's negated ones, so the depth is the least overlap `max_A(u·a) − min_B(u·b)` over
 /// those axes, and a pair apart is at the least of the vertex–segment distances. A circle of
 /// radius r and centre c against a polygon P: separation = signed distance of c from P − r (inside
-/// P: minus the least distance of c to an edge line). Computed in a frame centred on A's first
-/// vertex, so accuracy is relative to the shapes' size, not to their distance from the origin.
-/// Conventions (normal from A to B, signed separation, the status, levels, `Apart`, the manifold
-/// and its keys): `dyop/result.hpp`; shapes and caller's order: `dyop/polygon.hpp`.
+/// P: minus the least distance of c to an edge line). A segment is the polygon of its two sides
+/// (`Segment`): the bare segment, of no thickness, so its axes are its normal both ways. Computed
+/// in a frame centred on A's first vertex, so accuracy is relative to the shapes' size, not to
+/// their distance from the origin. Conventions (normal from A to B, signed separation, the status,
+/// levels, `Apart`, the manifold and its keys): `dyop/result.hpp`; shapes and caller's order:
+/// `dyop/polygon.hpp`.
 
 #include <cstdint>
 
@@ -75,7 +78,27 @@ Result<T> collide(const Polygon<T>& a, const Polygon<T>& b, const ConvexQuery<T>
 template <class T>
 Result<T> collide(const Polygon<T>& a, const Circle<T>& b, const ConvexQuery<T>& query = {});
 
+/// Exact answer for segment `a` (A, as Box2D orders an edge and a polygon) and polygon `b` at
+/// `query.level`: as for two polygons, the segment's sides being its two edges (`Segment`).
+/// `masks_a` are the segment's: edge bit 1 set keeps every push off its back (a one-sided edge),
+/// vertex bits 0 and 1 close its ends where a neighbour continues it flat or reflex.
+template <class T>
+Result<T> collide(const Segment<T>& a, const Polygon<T>& b, const ConvexQuery<T>& query = {});
+
+/// Exact answer for segment `a` and circle `b` at `query.level`: as for a polygon and a circle,
+/// the face the centre lies on being the side (the front on the segment's line itself).
+template <class T>
+Result<T> collide(const Segment<T>& a, const Circle<T>& b, const ConvexQuery<T>& query = {});
+
 /// \cond EXPLICIT_INSTANTIATIONS
+extern template Result<float> collide(const Segment<float>&, const Polygon<float>&,
+                                      const ConvexQuery<float>&);
+extern template Result<double> collide(const Segment<double>&, const Polygon<double>&,
+                                       const ConvexQuery<double>&);
+extern template Result<float> collide(const Segment<float>&, const Circle<float>&,
+                                      const ConvexQuery<float>&);
+extern template Result<double> collide(const Segment<double>&, const Circle<double>&,
+                                       const ConvexQuery<double>&);
 extern template Result<float> collide(const Polygon<float>&, const Polygon<float>&,
                                       const ConvexQuery<float>&);
 extern template Result<double> collide(const Polygon<double>&, const Polygon<double>&,

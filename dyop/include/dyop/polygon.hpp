@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// Validated convex shapes beyond the triangle: `Polygon` (3 to `max_polygon_vertices` vertices,
-/// every polygon a Box2D 2.4 `b2PolygonShape` can hold, `SetAsBox` included) and `Circle`. The
-/// input types of `collide` (`dyop/convex_pair.hpp`).
+/// every polygon a Box2D 2.4 `b2PolygonShape` can hold, `SetAsBox` included), `Circle` and
+/// `Segment` (a Box2D edge, or one edge of a chain). The input types of `collide`
+/// (`dyop/convex_pair.hpp`).
 ///
 /// Conventions (as for `Triangle`, `dyop/triangle.hpp`):
 /// - Vertices are given in world coordinates, in any winding. The polygon stores them
@@ -28,8 +29,8 @@ enum class ConvexError : std::uint8_t {
   VertexCount,     ///< fewer than 3 or more than `max_polygon_vertices` vertices
   NonFinite,       ///< a coordinate (or the radius) is NaN or infinite
   TooLarge,        ///< a coordinate (or the radius) beyond `max_coordinate`
-  TooSmall,        ///< longest edge (or the radius) below `min_size`
-  RepeatedVertex,  ///< two consecutive vertices are equal
+  TooSmall,        ///< longest edge (a segment's length, or the radius) below `min_size`
+  RepeatedVertex,  ///< two consecutive vertices are equal (a segment's two ends)
   NotConvex,       ///< a vertex lies on or outside the line of an edge it is not on (see
                    ///< `degenerate_tolerance`): reflex, collinear, self-intersecting or flat
 };
@@ -113,7 +114,62 @@ struct Circle {
   static ConvexError check(const Vec2<T>& center, T radius);
 };
 
+template <class T>
+class Segment;
+
+/// The outcome of `Segment<T>::make`: `segment` is meaningful only when `error == None`.
+template <class T>
+struct SegmentOrError;
+
+/// A line segment from `vertex(0)` to `vertex(1)`, as Box2D's `b2EdgeShape` holds one. It is read
+/// as a polygon of two vertices and two edges, one per side: edge 0 runs from vertex 0 to vertex 1
+/// and its outward normal `normal(0)` points to the right of that direction (Box2D's edge normal,
+/// the front of a one-sided edge); edge 1 runs back from vertex 1 to vertex 0, `normal(1)` the
+/// opposite (the back). Masks (`ShapeMasks`): edge bit 0 the front, bit 1 the back (set for a
+/// one-sided edge: no push through to its back); vertex bits 0 and 1 its ends.
+template <class T>
+class Segment {
+ public:
+  /// Validates the end points (world coordinates): finite, within `max_coordinate`, distinct and
+  /// at least `min_size` apart. Never asserts, never fixes input.
+  static SegmentOrError<T> make(const Vec2<T>& p0, const Vec2<T>& p1);
+  /// What `make` would find wrong with the end points (`None`: it would accept them).
+  static ConvexError check(const Vec2<T>& p0, const Vec2<T>& p1);
+
+  /// Number of vertices (and edges, one per side): 2.
+  static constexpr int count() { return 2; }
+  /// End point `i` (0 or 1), world coordinates.
+  const Vec2<T>& vertex(int i) const { return v_[static_cast<std::size_t>(i)]; }
+  /// Unit normal of side `i`: 0 the front (right of vertex 0 → vertex 1), 1 the back.
+  const Vec2<T>& normal(int i) const { return n_[static_cast<std::size_t>(i)]; }
+  /// The other end.
+  static constexpr int next(int i) { return 1 - i; }
+  /// Its length: the unit of its relative tolerances.
+  T size() const { return size_; }
+  /// The caller's order is the segment's own: vertex and edge indices map to themselves.
+  static constexpr int input_vertex(int i) { return i; }
+  /// See `input_vertex`.
+  static constexpr int input_edge(int i) { return i; }
+
+ private:
+  Segment() = default;
+  friend struct SegmentOrError<T>;
+
+  std::array<Vec2<T>, 2> v_{};
+  std::array<Vec2<T>, 2> n_{};
+  T size_ = 0;
+};
+
+template <class T>
+struct SegmentOrError {
+  ConvexError error = ConvexError::None;                  ///< None when `segment` is valid
+  Segment<T> segment;                                     ///< valid only when `error == None`
+  bool ok() const { return error == ConvexError::None; }  ///< true when `error == None`
+};
+
 /// \cond EXPLICIT_INSTANTIATIONS
+extern template class Segment<float>;
+extern template class Segment<double>;
 extern template class Polygon<float>;
 extern template class Polygon<double>;
 extern template struct Circle<float>;

@@ -78,7 +78,9 @@ template <class T, class P>
   out.normal = p.normal(e);
   out.signed_distance = farthest;
   out.nearest = c - farthest * out.normal;
-  if (farthest <= 0) return out;  // inside: the nearest face line
+  // Inside: the nearest face line. A segment (two vertices) has no inside: its nearest point is on
+  // it whichever side the centre lies on, also on its line.
+  if (farthest <= 0 && p.count() > 2) return out;
   Feature::Type type;
   int end;
   const Vec2<T> on = nearest_on_segment(v[e], v[p.next(e)], c, type, end);
@@ -108,7 +110,8 @@ T segment_distance(const P& p, const Shifted<T, P>& v, int e, const Vec2<T>& c) 
   return (c - nearest_on_segment(v[e], v[p.next(e)], c, type, end)).norm();
 }
 
-// `collide` for polygon `pa` and `circle`: `pa` a `Polygon<T>`, or any type with its members
+// `collide` for polygon `pa` and `circle`: `pa` a `Polygon<T>` or a `Segment<T>`, or any type with
+// its members
 // `count`, `vertex`, `normal`, `next`, `size`, `input_edge` and `input_vertex` (the Box2D plug-in
 // reads a `b2PolygonShape` in place). `size` is read once, whatever the status (measured:
 // docs/measurements.md, "The touching band measured where it matters"). Inline, so that a caller

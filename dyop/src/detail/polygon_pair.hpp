@@ -4,10 +4,11 @@
 // which calls it on its `b2PolygonShape`s in place (A as its shape holds it, B placed in A's body
 // frame as the frame reads it: no `Polygon` built).
 //
-// A polygon-like type has a `Polygon<T>`'s members `count`, `vertex`, `normal`, `next`, `size`,
-// `input_vertex` and `input_edge`; `vertex(i)` and `normal(i)` are read once each (into the
-// frame), so they may compute the vertex or normal on each call. `size` is read only where the
-// touching band needs it when the type also has `size_bound` (see `size_bound`), so it may measure.
+// A polygon-like type (`Polygon<T>`, `Segment<T>`: a polygon of two vertices, one edge per side)
+// has a `Polygon<T>`'s members `count`, `vertex`, `normal`, `next`, `size`, `input_vertex` and
+// `input_edge`; `vertex(i)` and `normal(i)` are read once each (into the frame), so they may
+// compute the vertex or normal on each call. `size` is read only where the touching band needs it
+// when the type also has `size_bound` (see `size_bound`), so it may measure.
 
 #include <algorithm>
 #include <array>
