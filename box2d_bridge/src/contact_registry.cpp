@@ -16,30 +16,24 @@ class Registry : public b2Contact {
     }
   }
 
-  static PolygonContactFcns get(b2Shape::Type b) {
+  static ContactFcns get(ShapePair pair) {
     initialize();
-    const b2ContactRegister& r = s_registers[b2Shape::e_polygon][b];
+    const b2ContactRegister& r = s_registers[pair.a][pair.b];
     return {r.createFcn, r.destroyFcn};
   }
 
   // `AddType` also fills the mirrored entry as not primary, so Box2D hands the fixtures over in
-  // this order (the polygon as A).
-  static void set(const PolygonContactFcns& f, b2Shape::Type b) {
+  // this order (A's type as fixture A).
+  static void set(const ContactFcns& f, ShapePair pair) {
     initialize();
-    AddType(f.create, f.destroy, b2Shape::e_polygon, b);
+    AddType(f.create, f.destroy, pair.a, pair.b);
   }
 };
 
 }  // namespace
 
-PolygonContactFcns polygon_contact_fcns() { return Registry::get(b2Shape::e_polygon); }
+ContactFcns contact_fcns(ShapePair pair) { return Registry::get(pair); }
 
-void register_polygon_contact(const PolygonContactFcns& f) { Registry::set(f, b2Shape::e_polygon); }
-
-PolygonContactFcns polygon_circle_contact_fcns() { return Registry::get(b2Shape::e_circle); }
-
-void register_polygon_circle_contact(const PolygonContactFcns& f) {
-  Registry::set(f, b2Shape::e_circle);
-}
+void register_contact(const ContactFcns& f, ShapePair pair) { Registry::set(f, pair); }
 
 }  // namespace dyop::box2d::detail

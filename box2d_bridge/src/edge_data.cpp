@@ -8,26 +8,41 @@
 
 #include "dyop/box2d_internal_edges.hpp"
 #include "internal_edges.hpp"
-#include "triangle_contact.hpp"
+#include "contact.hpp"
 
 namespace dyop::box2d {
 namespace detail {
 namespace {
 
+// True when `f` holds fixed edge data.
+bool has_fixed_edge_data(const b2Fixture& f) {
+  if (holds_edge_data(f)) return fixed_polygon_edges(f).has_value();
+  return two_sided_edge(f) && fixed_edge_ends(f).has_value();
+}
+
+// Writes `f`'s fixed edge data as it is now: a polygon's masks, or a two-sided edge's ends.
+void write_found_edge_data(b2Fixture& f) {
+  if (holds_edge_data(f)) {
+    write_fixed_edges(f, polygon_internal_edges(f));
+  } else {
+    write_fixed_edge_ends(f, edge_ends(f));
+  }
+}
+
 // The fixtures with fixed edge data whose broad-phase boxes overlap a region.
 class FixedInRegion : public b2QueryCallback {
  public:
   bool ReportFixture(b2Fixture* f) override {
-    if (holds_edge_data(*f) && fixed_polygon_edges(*f)) found.push_back(f);
+    if (has_fixed_edge_data(*f)) found.push_back(f);
     return true;
   }
   std::vector<b2Fixture*> found;
 };
 
-// The polygon fixtures of `body` that can hold fixed edge data.
-void add_polygons_of(const b2Body& body, std::vector<b2Fixture*>& out) {
+// The fixtures of `body` that can hold fixed edge data (`fixes_edge_data`).
+void add_fixable_of(const b2Body& body, std::vector<b2Fixture*>& out) {
   for (b2Fixture* f = const_cast<b2Body&>(body).GetFixtureList(); f; f = f->GetNext()) {
-    if (holds_edge_data(*f)) out.push_back(f);
+    if (fixes_edge_data(*f)) out.push_back(f);
   }
 }
 
@@ -35,12 +50,16 @@ void add_polygons_of(const b2Body& body, std::vector<b2Fixture*>& out) {
 
 void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures) {
   if (fixtures.empty()) return;
-  // Marked first (empty masks), then found over the region they span: a triangle's masks read
-  // its neighbours' shapes, never their edge data, so the order of the finds does not matter.
+  // Marked first (empty masks), then found over the region they span: a fixture's masks read its
+  // neighbours' shapes, never their edge data, so the order of the finds does not matter.
   b2AABB region;
   for (std::size_t i = 0; i < fixtures.size(); ++i) {
     b2Fixture& f = *fixtures[i];
-    write_fixed_edges(f, {});
+    if (holds_edge_data(f)) {
+      write_fixed_edges(f, {});
+    } else {
+      write_fixed_edge_ends(f, {});
+    }
     b2AABB box;
     f.GetShape()->ComputeAABB(&box, f.GetBody()->GetTransform(), 0);
     if (i == 0) {
@@ -56,31 +75,31 @@ void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures) {
 
 void fix_internal_edges(b2Body& body) {
   std::vector<b2Fixture*> fixtures;
-  detail::add_polygons_of(body, fixtures);
+  detail::add_fixable_of(body, fixtures);
   detail::fix_fixtures(*body.GetWorld(), fixtures);
 }
 
 void fix_internal_edges(b2World& world) {
   std::vector<b2Fixture*> fixtures;
   for (const b2Body* body = world.GetBodyList(); body; body = body->GetNext()) {
-    detail::add_polygons_of(*body, fixtures);
+    detail::add_fixable_of(*body, fixtures);
   }
   detail::fix_fixtures(world, fixtures);
 }
 
 void fix_internal_edges(b2World& world, const std::vector<b2Fixture*>& fixtures) {
-  std::vector<b2Fixture*> polygons;
+  std::vector<b2Fixture*> fixable;
   for (b2Fixture* f : fixtures) {
-    if (f && detail::holds_edge_data(*f)) polygons.push_back(f);
+    if (f && detail::fixes_edge_data(*f)) fixable.push_back(f);
   }
-  detail::fix_fixtures(world, polygons);
+  detail::fix_fixtures(world, fixable);
 }
 
 int refresh_internal_edges(b2World& world, const b2AABB& region) {
   detail::FixedInRegion query;
   world.QueryAABB(&query, region);
   for (b2Fixture* f : query.found) {
-    detail::write_fixed_edges(*f, detail::polygon_internal_edges(*f));
+    detail::write_found_edge_data(*f);
     detail::recompute_contacts_of(*f);  // a kept manifold was computed with the old masks
   }
   return static_cast<int>(query.found.size());

@@ -1,12 +1,14 @@
 #pragma once
-// Internal: a polygon fixture's fixed edge data (`fix_internal_edges`), kept in the fixture's own
-// shape. A triangle `b2PolygonShape` uses 3 of its 8 vertex slots; Box2D copies the whole shape
-// into the fixture (`b2PolygonShape::Clone`) and reads only `m_count` of them, so slots 3 and 4
-// hold the record (a box's 4 and 5, up to a 7-gon's last vertex and normal slots): freed with the
-// fixture, in the world's own memory, read where the contact already reads the vertices. Why there
-// and when it is refreshed: docs/design.md, section 5
-// ("Fixed edge data").
+// Internal: a polygon or two-sided edge fixture's fixed edge data (`fix_internal_edges`), kept in
+// the fixture's own shape. A triangle `b2PolygonShape` uses 3 of its 8 vertex slots; Box2D copies
+// the whole shape into the fixture (`b2PolygonShape::Clone`) and reads only `m_count` of them, so
+// slots 3 and 4 hold the record (a box's 4 and 5, up to a 7-gon's last vertex and normal slots). A
+// two-sided `b2EdgeShape` leaves its ghost vertices `m_vertex0` and `m_vertex3` unread: they hold
+// its record. Freed with the fixture, in the world's own memory, read where the contact already
+// reads the shape. Why there and when it is refreshed: docs/design.md, section 5 ("Fixed edge
+// data").
 
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
@@ -18,6 +20,7 @@
 
 #include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
+#include "internal_edges.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -37,25 +40,31 @@ static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a vertex mixes into the 
 // (its contacts find its masks, as for a fixture never fixed).
 constexpr int max_fixed_vertices = b2_maxPolygonVertices - 1;
 
-// The key of polygon fixture `fixture`'s record: its address, its body's and its vertices mixed.
+// The key of fixture `fixture`'s record: its address, its body's and its shape's `vertices`
+// mixed.
 // Why: a shape copied out of a fixture (`GetShape`) carries the record along, and a
 // default-constructed `b2PolygonShape` leaves the slots uninitialised; neither may read as edge
 // data. Box2D's allocators hand a destroyed fixture's address to the next one, so the address
 // alone would accept a copy recreated in its place; with the body and the vertices, a copy is
 // accepted only as the same polygon on the same body, where the record still describes it.
 // The constant makes a key unlike the float coordinates the slots hold otherwise. Never 0.
-inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
+inline std::uint64_t edge_record_key(const b2Fixture& fixture, const b2Vec2* vertices, int count) {
   constexpr std::uint64_t mix = 0x9E37'79B9'7F4A'7C15u;
-  const auto& polygon = *static_cast<const b2PolygonShape*>(fixture.GetShape());
   std::uint64_t key = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&fixture));
   key = (key ^ 0x5EED'ED6E'DA7A'0001u) * mix;
   key = (key ^ reinterpret_cast<std::uintptr_t>(fixture.GetBody())) * mix;
-  for (int i = 0; i < polygon.m_count; ++i) {
+  for (int i = 0; i < count; ++i) {
     std::uint64_t vertex;
-    std::memcpy(&vertex, &polygon.m_vertices[i], sizeof vertex);
+    std::memcpy(&vertex, &vertices[i], sizeof vertex);
     key = (key ^ vertex) * mix;
   }
   return key | 1;
+}
+
+// The key of polygon fixture `fixture`'s record.
+inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
+  const auto& polygon = *static_cast<const b2PolygonShape*>(fixture.GetShape());
+  return edge_record_key(fixture, polygon.m_vertices, polygon.m_count);
 }
 
 // Where a polygon's record lives: the two vertex slots after its last vertex (up to 6 vertices),
@@ -114,8 +123,51 @@ inline void write_fixed_edges(b2Fixture& fixture, ShapeMasks masks) {
   std::memcpy(record_masks_slot(polygon), bytes, sizeof bytes);
 }
 
-// Gives `fixtures` (triangles of `world`) fixed edge data and finds it again for every fixed
-// triangle next to them: `fix_internal_edges` and `add_triangles`.
+// A two-sided edge fixture's record: the key in `m_vertex0`, what its ends meet in `m_vertex3`.
+static_assert(sizeof(EdgeEnds) <= sizeof(b2Vec2), "an edge's ends fit its m_vertex3");
+
+// True when `fixture` is a two-sided edge (whose ghost vertices Box2D leaves unread).
+inline bool two_sided_edge(const b2Fixture& fixture) {
+  return fixture.GetType() == b2Shape::e_edge &&
+         !static_cast<const b2EdgeShape*>(fixture.GetShape())->m_oneSided;
+}
+
+// The key of two-sided edge fixture `fixture`'s record: over its two vertices.
+inline std::uint64_t edge_ends_key(const b2Fixture& fixture) {
+  const auto& edge = *static_cast<const b2EdgeShape*>(fixture.GetShape());
+  const b2Vec2 vertices[2] = {edge.m_vertex1, edge.m_vertex2};
+  return edge_record_key(fixture, vertices, 2);
+}
+
+// The fixed ends of two-sided edge fixture `fixture`, or nothing: none written.
+inline std::optional<EdgeEnds> fixed_edge_ends(const b2Fixture& fixture) {
+  const auto& edge = *static_cast<const b2EdgeShape*>(fixture.GetShape());
+  std::uint64_t key;
+  std::memcpy(&key, &edge.m_vertex0, sizeof key);
+  if (key != edge_ends_key(fixture)) return std::nullopt;
+  EdgeEnds ends;
+  std::memcpy(&ends, &edge.m_vertex3, sizeof ends);
+  return ends;
+}
+
+// Writes `ends` as the fixed edge data of two-sided edge fixture `fixture`.
+inline void write_fixed_edge_ends(b2Fixture& fixture, EdgeEnds ends) {
+  auto& edge = *static_cast<b2EdgeShape*>(fixture.GetShape());
+  const std::uint64_t key = edge_ends_key(fixture);
+  std::memcpy(&edge.m_vertex0, &key, sizeof key);
+  edge.m_vertex3.SetZero();
+  std::memcpy(&edge.m_vertex3, &ends, sizeof ends);
+}
+
+// True when `fixture` holds, or can hold, fixed edge data: a polygon of up to
+// `max_fixed_vertices`, or a two-sided edge.
+inline bool fixes_edge_data(const b2Fixture& fixture) {
+  return holds_edge_data(fixture) || two_sided_edge(fixture);
+}
+
+// Gives `fixtures` (polygons and two-sided edges of `world`, `fixes_edge_data`) fixed edge data
+// and finds it again for every fixed fixture next to them: `fix_internal_edges` and
+// `add_triangles`.
 void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures);
 
 }  // namespace dyop::box2d::detail

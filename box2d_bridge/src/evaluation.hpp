@@ -9,7 +9,7 @@
 // Inline: most evaluations in a world end in a kept manifold or a skip that costs a few dozen
 // instructions, and Box2D's own contact answers a pair apart after one face test, so every call,
 // every register saved and every transformed vertex counts: a world's contact runs each act in
-// its own function for its pair's family (`TriangleContact::Evaluate`), and the answer is out of
+// its own function for its pair's family (`Contact::Evaluate`), and the answer is out of
 // line, so that a keep or a skip pays no register saves for the acts after it.
 
 #include <box2d/b2_collision.h>
@@ -23,7 +23,7 @@
 #include "pair_families.hpp"
 #include "recycling.hpp"
 #include "stats.hpp"
-#include "triangle_contact.hpp"
+#include "contact.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -38,7 +38,7 @@ inline bool needs_masks(const Result<float>& r, float margin) {
 // setting's install and the world as it is (see evaluation.cpp); its stamp and fixture count are
 // brought up to date. `recycling`: the pose of its last answer afresh, nullptr for none.
 bool masks_put_off(const Setting& setting, const PairPose& pose, FoundMasks& masks,
-                   const TriangleContact& contact, const ManifoldRecycling* recycling);
+                   const Contact& contact, const ManifoldRecycling* recycling);
 
 // Where `pair` is now (`memory`: its bounding radii).
 template <class Pair>
@@ -54,7 +54,7 @@ template <class Pair>
 // makes or ends a contact with one of its bodies, which forgets the masks at once. `rule`: the
 // internal-edge rule is in force for the pair.
 inline bool keeps_manifold(const Setting& setting, bool rule, const PairPose& pose,
-                           const ManifoldRecycling& recycling, const TriangleContact* contact,
+                           const ManifoldRecycling& recycling, const Contact* contact,
                            FoundMasks* masks) {
   if (setting.never_recompute) return recycling.slack > 0 && recycling.epoch == setting.epoch;
   if (!recycling.keeps(pose.b_in_a.q, pose.centroid_b_in_a, pose.lever(), setting.epoch)) {
@@ -75,8 +75,8 @@ inline bool keeps_manifold(const Setting& setting, bool rule, const PairPose& po
 template <class Pair>
 [[gnu::always_inline]] inline bool keep(const b2Manifold& manifold, const Setting& setting,
                                         const PairPose& pose, const ContactMemory& memory,
-                                        const ManifoldRecycling& recycling,
-                                        const TriangleContact* contact, FoundMasks* masks) {
+                                        const ManifoldRecycling& recycling, const Contact* contact,
+                                        FoundMasks* masks) {
   if (!(recycling.slack > 0) || !setting.method ||
       !keeps_manifold(setting, Pair::rule(setting), pose, recycling, contact, masks)) {
     return false;
@@ -98,7 +98,7 @@ template <class Pair>
                                                           const ContactMemory& memory) {
   if (setting.config.bounds_early_out) {
     const float reach_sum = pose.radius_sum + reach(pose.margin);
-    if ((pose.centroid_b_in_a - pair.a.m_centroid).LengthSquared() > reach_sum * reach_sum) {
+    if ((pose.centroid_b_in_a - pair.centroid_a()).LengthSquared() > reach_sum * reach_sum) {
       return Skip::Bounds;
     }
   }
@@ -139,7 +139,7 @@ template <class Pair>
 template <class Pair>
 [[gnu::always_inline]] inline Result<float> solve_with_masks(
     const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
-    const TriangleContact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
+    const Contact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
   typename Pair::Query q;
   q.level = Level::Manifold;
   q.margin = pose.margin;  // the skins: speculative, as Box2D's
@@ -148,18 +148,18 @@ template <class Pair>
   q.witnesses = false;   // Box2D's solver reads the manifold alone
   bool put_off = false;
   if (Pair::rule(setting)) {
-    if (contact && Pair::fixed_masks(*contact, memory)) {
+    if (contact && contact->fixed_masks(memory)) {
       masks->stamp = FoundMasks::fixed_stamp;
     } else if (contact) {
       put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
     }
-    if (!put_off) Pair::take_masks(q, memory);
+    if (!put_off) pair.take_masks(q, memory);
   }
   Result<float> r = pair.solve(setting, q, pose, memory);
   if (put_off && needs_masks(r, q.margin)) {
     masks->found_now(contact->world_fixtures());
-    Pair::find_masks(*contact, *masks, setting.epoch, memory);
-    Pair::take_masks(q, memory);
+    contact->find_masks(*masks, setting.epoch, memory);
+    pair.take_masks(q, memory);
     if (Pair::any_masks(q)) r = pair.solve(setting, q, pose, memory);
   }
   if (Pair::any_masks(q)) counters().internal_edge_pairs.add();
@@ -168,19 +168,17 @@ template <class Pair>
 
 // Remembers the pose of a manifold just answered: kept while the pair moves less than the
 // setting's distance (a share of it with a static body: `static_pair_share`); an empty one also no
-// farther than its gap beyond what a manifold reaches (the family's `gap`: a lower bound, so that
-// no new contact is missed); never below 0 (that marks a skip: `ManifoldRecycling::lose_pose`).
-template <class Pair>
-void remember(const Setting& setting, const Pair& pair, const PairPose& pose,
-              const b2Manifold& manifold, const Result<float>& r, const ContactMemory& memory,
-              const TriangleContact* contact, ManifoldRecycling& recycling) {
+// farther than `gap` (how far the pair may move before a manifold could have points: a lower
+// bound, so that no new contact is missed); never below 0 (that marks a skip:
+// `ManifoldRecycling::lose_pose`).
+inline void remember(const Setting& setting, const PairPose& pose, const b2Manifold& manifold,
+                     float gap, const Contact* contact, ManifoldRecycling& recycling) {
   if (!setting.recycles()) return;
   float slack = 1;
   if (!setting.never_recompute) {
     const bool static_pair = contact && contact->with_static_body();
     const float distance = setting.config.recycle_distance * (static_pair ? static_pair_share : 1);
-    slack = manifold.pointCount > 0 ? distance
-                                    : std::max(0.0f, std::min(distance, pair.gap(r, pose, memory)));
+    slack = manifold.pointCount > 0 ? distance : std::max(0.0f, std::min(distance, gap));
   }
   recycling.remember(pose.b_in_a.q, pose.centroid_b_in_a, slack, setting.epoch);
 }
@@ -192,20 +190,27 @@ void remember(const Setting& setting, const Pair& pair, const PairPose& pose,
 // the world goes on).
 template <class Pair>
 [[gnu::noinline]] void answer(b2Manifold* manifold, const Setting& setting, const Pair& pair,
-                              const PairPose& pose, ContactMemory& memory,
-                              const TriangleContact* contact, FoundMasks* masks,
-                              ManifoldRecycling* recycling) {
+                              const PairPose& pose, ContactMemory& memory, const Contact* contact,
+                              FoundMasks* masks, ManifoldRecycling* recycling) {
   ThreadCounters& count = counters();
   Pair::count(count, setting, memory);
   if (Pair::solver_on(setting)) {
     if (pair.accepted(memory)) {
+      // Box2D's one-sided rule (`EdgePair::behind`): no contact while B stays behind.
+      if (const std::optional<float> behind = pair.behind(pose)) {
+        manifold->pointCount = 0;
+        if (recycling) remember(setting, pose, *manifold, *behind, contact, *recycling);
+        return;
+      }
       const Result<float> r =
           solve_with_masks(setting, pair, pose, memory, contact, masks, recycling);
       if (r.status != Status::Invalid) {
-        memory.last_face = judged_face(r.manifold, pair.a.m_count);
+        memory.last_face = judged_face(r.manifold, pair.count_a());
         pair.write(manifold, r.manifold, pose);
         if (manifold->pointCount > 0) count.manifolds.add();
-        if (recycling) remember(setting, pair, pose, *manifold, r, memory, contact, *recycling);
+        if (recycling) {
+          remember(setting, pose, *manifold, pair.gap(r, pose, memory), contact, *recycling);
+        }
         return;
       }
     }
@@ -219,22 +224,28 @@ template <class Pair>
 // world's contact and the entry points alike: their solvers are instantiated for several vertex
 // counts each (`PolygonPair::solve`), which costs seconds of build per translation unit.
 extern template void answer<PolygonPair>(b2Manifold*, const Setting&, const PolygonPair&,
-                                         const PairPose&, ContactMemory&, const TriangleContact*,
+                                         const PairPose&, ContactMemory&, const Contact*,
                                          FoundMasks*, ManifoldRecycling*);
 extern template void answer<PolygonCirclePair>(b2Manifold*, const Setting&,
                                                const PolygonCirclePair&, const PairPose&,
-                                               ContactMemory&, const TriangleContact*, FoundMasks*,
+                                               ContactMemory&, const Contact*, FoundMasks*,
                                                ManifoldRecycling*);
+extern template void answer<EdgePolygonPair>(b2Manifold*, const Setting&, const EdgePolygonPair&,
+                                             const PairPose&, ContactMemory&, const Contact*,
+                                             FoundMasks*, ManifoldRecycling*);
+extern template void answer<EdgeCirclePair>(b2Manifold*, const Setting&, const EdgeCirclePair&,
+                                            const PairPose&, ContactMemory&, const Contact*,
+                                            FoundMasks*, ManifoldRecycling*);
 
 // An evaluation, once nothing was kept (or with nothing to keep): skip, else answer; uninstalled,
 // Box2D's own answer, uncounted, exactly as Box2D's own contact. `memory` is the pair's state, its
 // shapes looked at (`look_at_shapes`), updated; `contact` the world's contact it belongs to, if
 // any, `masks` what it found of its masks and `recycling` its kept manifold's pose (all nullptr
-// for a single pair). A world's contact tries `keep` first (`TriangleContact::Evaluate`).
+// for a single pair). A world's contact tries `keep` first (`Contact::Evaluate`).
 template <class Pair>
 [[gnu::always_inline]] inline void skip_or_answer(b2Manifold* manifold, const Setting& setting,
                                                   const Pair& pair, ContactMemory& memory,
-                                                  const TriangleContact* contact = nullptr,
+                                                  const Contact* contact = nullptr,
                                                   FoundMasks* masks = nullptr,
                                                   ManifoldRecycling* recycling = nullptr) {
   if (!setting.backend) return pair.box2d(manifold);

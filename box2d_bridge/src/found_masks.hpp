@@ -12,7 +12,7 @@
 
 namespace dyop::box2d::detail {
 
-// 8 bytes: the contact's size budget counts on it (triangle_contact.cpp).
+// 8 bytes: the contact's size budget counts on it (contact.cpp).
 struct FoundMasks {
   // The masks were read from the two fixtures' fixed edge data: a refresh makes the contact
   // recompute (`refresh_internal_edges`), so nothing is followed.
@@ -26,7 +26,7 @@ struct FoundMasks {
   // under `stamp`, moved too far, or a skip lost the pose).
   float motion = not_found;
   // What the masks hold under: 0 none (never seen, or forgotten); `fixed_stamp`; else the install
-  // and the frames of the pair's static bodies, folded (`TriangleContact::internal_edges_stamp`).
+  // and the frames of the pair's static bodies, folded (`Contact::internal_edges_stamp`).
   std::uint16_t stamp = 0;
   // The world's count of fixture proxies (low 16 bits) when the masks were found.
   std::uint16_t fixtures = 0;

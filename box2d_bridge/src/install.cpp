@@ -1,6 +1,6 @@
 #include "dyop/box2d_measurement.hpp"
 #include "installation.hpp"
-#include "triangle_contact.hpp"
+#include "contact.hpp"
 
 namespace dyop::box2d {
 
@@ -9,6 +9,16 @@ namespace {
 constexpr InstallResult kNotABackend = {
     InstallStatus::UnsupportedMethod,
     "refused: not a backend of the plug-in (dyop::box2d::all_backends)"};
+
+// Registers, for `taken_pairs[i]`, the plug-in's create function (`ours`) or Box2D's own, with
+// the plug-in's destroy function (see `Contact::destroy`).
+void register_taken_pair(int i, bool ours) {
+  const auto k = static_cast<std::size_t>(i);
+  const detail::Installation& now = detail::installation();
+  detail::register_contact(
+      {ours ? &detail::Contact::create : now.box2d_own[k].create, &detail::Contact::destroy},
+      detail::taken_pairs[k]);
+}
 
 // Installs `backend` with `config`; `never_recompute`: the measurement floor.
 InstallResult install_setting(Backend backend, const Config& config, bool never_recompute) {
@@ -19,21 +29,20 @@ InstallResult install_setting(Backend backend, const Config& config, bool never_
     return {InstallStatus::Done, "already installed"};
   }
   if (!now.saved) {
-    now.box2d_own = detail::polygon_contact_fcns();
-    now.box2d_own_circle = detail::polygon_circle_contact_fcns();
+    for (int i = 0; i < detail::taken_pair_count; ++i) {
+      now.box2d_own[static_cast<std::size_t>(i)] =
+          detail::contact_fcns(detail::taken_pairs[static_cast<std::size_t>(i)]);
+    }
     now.saved = true;
   }
   // Contacts already made, ours and Box2D's own, stay valid under any registration: see
-  // TriangleContact::destroy. Ours read the setting at every evaluation, so they switch at the
+  // Contact::destroy. Ours read the setting at every evaluation, so they switch at the
   // next step, and take their internal-edge masks again (and drop any kept manifold) under the
-  // new epoch.
-  detail::register_polygon_contact(
-      {&detail::TriangleContact::create, &detail::TriangleContact::destroy});
-  // Circles too, unless kept to triangle pairs; our destroy function stays either way, as for
-  // polygon pairs.
-  detail::register_polygon_circle_contact(
-      {config.triangles_only ? now.box2d_own_circle.create : &detail::TriangleContact::create,
-       &detail::TriangleContact::destroy});
+  // new epoch. Our destroy function stays registered for every pair either way.
+  for (int i = 0; i < detail::taken_pair_count; ++i) {
+    register_taken_pair(
+        i, detail::takes_pair(config, detail::taken_pairs[static_cast<std::size_t>(i)]));
+  }
   const std::uint8_t epoch = now.setting.epoch == 255 ? 1 : now.setting.epoch + 1;
   now.setting = detail::Setting(backend, config, static_cast<std::uint8_t>(epoch));
   now.setting.never_recompute = never_recompute;
@@ -69,11 +78,9 @@ InstallResult uninstall() {
   if (!now.setting.backend) {
     return {InstallStatus::Done, "not installed: Box2D's own contact is registered"};
   }
-  // Box2D's own create function; our destroy function stays, as it frees every polygon contact
-  // as what it is (ours are not in the class Box2D's own destroy function frees).
-  detail::register_polygon_contact({now.box2d_own.create, &detail::TriangleContact::destroy});
-  detail::register_polygon_circle_contact(
-      {now.box2d_own_circle.create, &detail::TriangleContact::destroy});
+  // Box2D's own create functions; our destroy function stays, as it frees every contact of these
+  // pairs as what it is (ours are not in the class Box2D's own destroy functions free).
+  for (int i = 0; i < detail::taken_pair_count; ++i) register_taken_pair(i, false);
   // The config and the epoch stay: `installed_config()` is the last install's.
   now.setting.backend.reset();
   now.setting.method.reset();

@@ -6,6 +6,7 @@
 // must not run while another thread steps a world (see `dyop/box2d.hpp`), so that evaluations on
 // any number of threads only read it.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -47,14 +48,20 @@ struct Setting {
   }
 };
 
+// True when the plug-in's contact takes `pair` under `config`: polygon pairs always; the others
+// unless `Config::triangles_only`, and edges and chains unless `Config::edges_and_chains` is off.
+inline bool takes_pair(const Config& config, ShapePair pair) {
+  if (pair.b == b2Shape::e_polygon && pair.a == b2Shape::e_polygon) return true;
+  if (config.triangles_only) return false;
+  return pair.a == b2Shape::e_polygon || config.edges_and_chains;
+}
+
 struct Installation {
   Setting setting;
-  // What was registered for polygon pairs before the first install: Box2D's own
-  // b2PolygonContact (its functions are not exported, so they can only be saved from the
-  // registry). Valid once `saved` is true.
-  PolygonContactFcns box2d_own;
-  // The same for polygon–circle pairs (Box2D's own b2PolygonAndCircleContact).
-  PolygonContactFcns box2d_own_circle;
+  // What was registered for each of `taken_pairs` before the first install: Box2D's own contacts
+  // (b2PolygonContact, b2PolygonAndCircleContact, b2EdgeAndPolygonContact, ...: their functions
+  // are not exported, so they can only be saved from the registry). Valid once `saved` is true.
+  std::array<ContactFcns, taken_pair_count> box2d_own{};
   bool saved = false;
 };
 

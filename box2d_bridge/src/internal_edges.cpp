@@ -1,5 +1,7 @@
 #include "internal_edges.hpp"
 
+#include <box2d/b2_chain_shape.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 #include <box2d/b2_world_callbacks.h>
@@ -14,12 +16,6 @@
 namespace dyop::box2d {
 namespace detail {
 namespace {
-
-// A vertex outline turning by less than this (the sine of the angle between its two outline
-// edges) counts as flat. Why: vertices placed on one line by float arithmetic (i · cell) are
-// collinear to ~1e-7 relative, and a turn of a thousandth of a radian is no corner: the own
-// edge's normal is within that angle of the outline's.
-constexpr float flat_outline_sine = 1e-3f;
 
 // A non-static body with at most this many fixtures has its list walked instead of the broad
 // phase queried. Why: the result is the same (every polygon of the body is a candidate; only
@@ -307,13 +303,150 @@ struct VertexOutline {
   }
 
   // A simple outline vertex (one piece in, one out) turning by less than a corner, or reflex.
-  bool flat_or_reflex() const {
-    return ins == 1 && outs == 1 &&
-           b2Cross(in, out) <= flat_outline_sine * in.Length() * out.Length();
-  }
+  bool flat_or_reflex() const { return ins == 1 && outs == 1 && turns_flat_or_reflex(in, out); }
 };
 
+// The rays at one end of a two-sided edge: the directions, in the edge's body frame, along which
+// the group's edges leave that point.
+class EndRays {
+ public:
+  EndRays(const b2Fixture& self, const b2Vec2& at, std::vector<b2Vec2>& scratch)
+      : self_(self), body_(*self.GetBody()), at_(at), rays_(scratch) {
+    rays_.clear();
+  }
+
+  void collect() {
+    const float reach = 2 * tolerance_for(magnitude(body_.GetTransform().p));
+    if (body_.GetType() != b2_staticBody) {
+      for (const b2Fixture* f = body_.GetFixtureList(); f; f = f->GetNext()) {
+        for (int child = 0; child < f->GetShape()->GetChildCount(); ++child) consider(*f, child);
+      }
+      return;
+    }
+    const b2Vec2 p = b2Mul(body_.GetTransform(), at_);
+    b2AABB box;
+    box.lowerBound = p - b2Vec2(reach, reach);
+    box.upperBound = p + b2Vec2(reach, reach);
+    broad_phase().Query(this, box);
+  }
+
+  // b2BroadPhase's query callback: every proxy whose box meets the end's.
+  bool QueryCallback(int32 proxy) {
+    const auto* fp = static_cast<const b2FixtureProxy*>(broad_phase().GetUserData(proxy));
+    consider(*fp->fixture, fp->childIndex);
+    return true;
+  }
+
+  const std::vector<b2Vec2>& rays() const { return rays_; }
+
+ private:
+  const b2BroadPhase& broad_phase() const {
+    return body_.GetWorld()->GetContactManager().m_broadPhase;
+  }
+
+  // Points of two frames whose origins sum to `origins` in magnitude are one point within this
+  // (`Group::tolerance`'s rule).
+  float tolerance_for(float origins) const { return 16 * FLT_EPSILON * (magnitude(at_) + origins); }
+
+  void consider(const b2Fixture& f, int child) {
+    if (&f == &self_ || f.IsSensor()) return;
+    const b2Body& body = *f.GetBody();
+    if (!share_edges(body_, body)) return;
+    b2Vec2 v[b2_maxPolygonVertices];
+    int count = 0;
+    bool closed = false;  // a polygon's outline closes on itself; an edge's does not
+    const b2Shape* shape = f.GetShape();
+    if (shape->m_type == b2Shape::e_polygon) {
+      const auto& p = *static_cast<const b2PolygonShape*>(shape);
+      count = p.m_count;
+      for (int i = 0; i < count; ++i) v[i] = p.m_vertices[i];
+      closed = true;
+    } else if (shape->m_type == b2Shape::e_edge || shape->m_type == b2Shape::e_chain) {
+      b2EdgeShape edge;
+      if (shape->m_type == b2Shape::e_chain) {
+        static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+      } else {
+        edge = *static_cast<const b2EdgeShape*>(shape);
+      }
+      v[0] = edge.m_vertex1;
+      v[1] = edge.m_vertex2;
+      count = 2;
+    } else {
+      return;  // a circle is no part of an outline
+    }
+    const b2Transform& mine = body_.GetTransform();
+    const b2Transform& theirs = body.GetTransform();
+    float origins = 0;
+    if (&body != &body_) {
+      for (int i = 0; i < count; ++i) v[i] = b2MulT(mine, b2Mul(theirs, v[i]));
+      origins = magnitude(mine.p) + magnitude(theirs.p);
+    }
+    const float tol = tolerance_for(origins);
+    const int segments = closed ? count : 1;
+    for (int i = 0; i < segments; ++i) {
+      const b2Vec2& a = v[i];
+      const b2Vec2& b = v[(i + 1) % count];
+      const bool at_a = b2DistanceSquared(a, at_) <= tol * tol;
+      const bool at_b = !at_a && b2DistanceSquared(b, at_) <= tol * tol;
+      if (at_a || at_b) {
+        rays_.push_back(at_a ? b - a : a - b);
+        continue;
+      }
+      // Through the point, off both ends: a T-junction, rays both ways.
+      const Line line(a, b);
+      const float t = line.along(at_);
+      if (t > tol && t < line.length - tol && within(line, at_, tol)) {
+        rays_.push_back(b - a);
+        rays_.push_back(a - b);
+      }
+    }
+  }
+
+  const b2Fixture& self_;
+  const b2Body& body_;
+  b2Vec2 at_;
+  std::vector<b2Vec2>& rays_;
+};
+
+// The angle (0, 2π] from `from` to `to` turning counter-clockwise (`ccw`) or clockwise.
+float turn_angle(const b2Vec2& from, const b2Vec2& to, bool ccw) {
+  float a = std::atan2(b2Cross(from, to), b2Dot(from, to));
+  if (!ccw) a = -a;
+  return a <= 0 ? a + 2 * b2_pi : a;
+}
+
 }  // namespace
+
+EdgeEnds edge_ends(const b2Fixture& fixture) {
+  EdgeEnds out;
+  if (fixture.GetType() != b2Shape::e_edge) return out;
+  const auto& edge = *static_cast<const b2EdgeShape*>(fixture.GetShape());
+  // A flat or reflex end: the free space on that side spans at most a half-turn and the flat
+  // tolerance.
+  const float most = b2_pi + std::asin(flat_outline_sine);
+  thread_local std::vector<b2Vec2> scratch;
+  for (int k = 0; k < 2; ++k) {
+    const b2Vec2& at = k == 0 ? edge.m_vertex1 : edge.m_vertex2;
+    const b2Vec2 along = (k == 0 ? edge.m_vertex2 : edge.m_vertex1) - at;
+    EndRays rays(fixture, at, scratch);
+    rays.collect();
+    // The front lies clockwise from the edge at its first end, counter-clockwise at its second.
+    float front = 2 * b2_pi;
+    float back = 2 * b2_pi;
+    for (const b2Vec2& r : rays.rays()) {
+      const float ccw = turn_angle(along, r, true);
+      if (ccw >= 2 * b2_pi) continue;  // along the edge itself: no bound on either side
+      const float cw = 2 * b2_pi - ccw;
+      front = std::min(front, k == 0 ? cw : ccw);
+      back = std::min(back, k == 0 ? ccw : cw);
+    }
+    const auto bit = static_cast<std::uint8_t>(1u << k);
+    if (!rays.rays().empty()) out.neighbours |= bit;
+    if (front <= most) out.closed_front |= bit;
+    if (back <= most) out.closed_back |= bit;
+  }
+  return out;
+}
 
 ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
   const b2PolygonShape* own = polygon_of(fixture);

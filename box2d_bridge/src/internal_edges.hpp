@@ -1,5 +1,6 @@
 #pragma once
-// Internal: the internal-edge masks of a world's triangle fixture (`Config::internal_edges`),
+// Internal: the internal-edge masks of a world's polygon fixture (`Config::internal_edges`), and
+// what a two-sided edge's ends meet,
 // found from the fixtures as they are now: the triangles near it that share edges with it (its
 // body's, and for a static body every static body's), looked up in the world's own broad phase.
 // Nothing is kept outside the contacts: no table that a deleted world could leave behind, a
@@ -8,10 +9,24 @@
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 
+#include <cstdint>
+
 #include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
 
 namespace dyop::box2d::detail {
+
+// A vertex outline turning by less than this (the sine of the angle between its two outline
+// edges) counts as flat. Why: vertices placed on one line by float arithmetic (i · cell) are
+// collinear to ~1e-7 relative, and a turn of a thousandth of a radian is no corner: the own
+// edge's normal is within that angle of the outline's.
+constexpr float flat_outline_sine = 1e-3f;
+
+// True when an outline running along `in` then `out` (the solid on its left, as a CCW polygon's)
+// turns left by less than `flat_outline_sine`, or right: flat or reflex, seen from the solid.
+inline bool turns_flat_or_reflex(const b2Vec2& in, const b2Vec2& out) {
+  return b2Cross(in, out) <= flat_outline_sine * in.Length() * out.Length();
+}
 
 // True when triangles of bodies `a` and `b` share edges: the same body, or two static bodies.
 // Dynamic and kinematic bodies keep their edges to themselves (they move apart).
@@ -39,5 +54,30 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 // The same for a polygon fixture of any vertex count (bits 0..count−1, Box2D's order); its edge
 // group holds polygons of every vertex count. Empty for a circle, edge or chain.
 ShapeMasks polygon_internal_edges(const b2Fixture& fixture);
+
+// What a two-sided edge fixture's ends meet: the outline of the group (its body's edges, chains and
+// polygons, and for a static body every static body's) through each end, seen from either side.
+struct EdgeEnds {
+  std::uint8_t neighbours = 0;    // bit k: end k (0 `m_vertex1`, 1 `m_vertex2`) meets the group
+  std::uint8_t closed_front = 0;  // bit k: from the front, the outline at end k is flat or reflex
+  std::uint8_t closed_back = 0;   // bit k: the same from the back
+};
+
+// The masks (`Segment`'s bits) of a two-sided edge for a body on its front (`back` false) or its
+// back: nothing when its ends meet nothing (both sides, as Box2D's), else its other side internal
+// and its ends closed as seen from the body's side.
+inline ShapeMasks side_masks(EdgeEnds ends, bool back) {
+  if (ends.neighbours == 0) return {};
+  return {static_cast<std::uint8_t>(back ? 0b01 : 0b10),
+          back ? ends.closed_back : ends.closed_front};
+}
+
+// What two-sided edge fixture `fixture`'s ends meet now: at each end, the rays along the group's
+// edges, chain edges and polygon edges that end at it or pass through it (points one within the
+// tolerance of `polygon_internal_edges`); from each side, the first ray met turning from the edge
+// toward that side bounds the free space there, and the end is closed when that space spans at
+// most a half-turn (flat within `flat_outline_sine`, or reflex). Found with one broad-phase query
+// per end (a walk of a non-static body's fixtures).
+EdgeEnds edge_ends(const b2Fixture& fixture);
 
 }  // namespace dyop::box2d::detail

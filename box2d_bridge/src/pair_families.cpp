@@ -5,7 +5,7 @@
 
 #include "edge_data.hpp"
 #include "internal_edges.hpp"
-#include "triangle_contact.hpp"
+#include "contact.hpp"
 
 namespace dyop::box2d::detail {
 namespace {
@@ -31,12 +31,6 @@ Triangle<float> triangle(const b2PolygonShape& shape) {
 Triangle<float> triangle(const b2PolygonShape& shape, const b2Transform& xf) {
   return Triangle<float>::from_validated(vertices(shape), normals(shape), xf.q.c, xf.q.s,
                                          vec(xf.p));
-}
-
-// The masks a fixture's pairs read: its fixed edge data, else found now.
-ShapeMasks masks_of(const b2Fixture& fixture) {
-  if (const std::optional<ShapeMasks> fixed = fixed_polygon_edges(fixture)) return *fixed;
-  return polygon_internal_edges(fixture);
 }
 
 // Writes the solver's manifold `mf` of polygons `a` and `b` (computed in A's body frame; `b_in_a`:
@@ -77,6 +71,54 @@ void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMem
   memory.shapes = ContactMemory::Shapes::UnvalidatedTriangles;
 }
 
+namespace {
+
+// The shapes of an edge pair: `front`, `back` or `invalid`, by the segment's validity and, for a
+// two-sided edge, the side of B's centroid (ties to the front); its bounding radius, half its
+// length about its midpoint.
+void look_at_edge(const b2EdgeShape& a, bool b_valid, const b2Vec2& centroid_b_in_a, float radius_b,
+                  ContactMemory::Shapes front, ContactMemory::Shapes back,
+                  ContactMemory::Shapes invalid, ContactMemory& memory) {
+  memory.radius_sum = 0.5f * b2Distance(a.m_vertex1, a.m_vertex2) + radius_b;
+  if (!b_valid || Segment<float>::check(vec(a.m_vertex1), vec(a.m_vertex2)) != ConvexError::None) {
+    memory.shapes = invalid;
+    return;
+  }
+  const b2Vec2 along = a.m_vertex2 - a.m_vertex1;
+  const bool on_back = !a.m_oneSided && b2Cross(along, centroid_b_in_a - a.m_vertex1) > 0;
+  memory.shapes = on_back ? back : front;
+}
+
+}  // namespace
+
+void look_at_shapes(const b2EdgeShape& a, const b2PolygonShape& b, const b2Vec2& centroid_b_in_a,
+                    ContactMemory& memory) {
+  using Shapes = ContactMemory::Shapes;
+  look_at_edge(a, valid_polygon(b), centroid_b_in_a, bounding_radius(b), Shapes::EdgeAndPolygon,
+               Shapes::EdgeBackAndPolygon, Shapes::InvalidEdgeAndPolygon, memory);
+}
+
+void look_at_shapes(const b2EdgeShape& a, const b2CircleShape& b, const b2Vec2& centroid_b_in_a,
+                    ContactMemory& memory) {
+  using Shapes = ContactMemory::Shapes;
+  const bool valid = Circle<float>::check(vec(b.m_p), b.m_radius) == ConvexError::None;
+  look_at_edge(a, valid, centroid_b_in_a, b.m_radius, Shapes::EdgeAndCircle,
+               Shapes::EdgeBackAndCircle, Shapes::InvalidEdgeAndCircle, memory);
+}
+
+ShapeMasks one_sided_masks(const b2EdgeShape& edge) {
+  const b2Vec2 before = edge.m_vertex1 - edge.m_vertex0;
+  const b2Vec2 along = edge.m_vertex2 - edge.m_vertex1;
+  const b2Vec2 after = edge.m_vertex3 - edge.m_vertex2;
+  // The outline runs along the chain with its solid on the left (the front is on the right).
+  ShapeMasks m;
+  m.edges = 0b10;
+  m.closed_vertices =
+      static_cast<std::uint8_t>(static_cast<unsigned>(turns_flat_or_reflex(before, along)) |
+                                static_cast<unsigned>(turns_flat_or_reflex(along, after)) << 1);
+  return m;
+}
+
 void look_at_shapes(const b2PolygonShape& a, const b2CircleShape& b, ContactMemory& memory) {
   const bool valid =
       valid_polygon(a) && Circle<float>::check({b.m_p.x, b.m_p.y}, b.m_radius) == ConvexError::None;
@@ -106,11 +148,6 @@ void TrianglePair::validate(ContactMemory& memory) const {
                                                          : ContactMemory::Shapes::InvalidTriangles;
 }
 
-void TrianglePair::find_masks(const TriangleContact& contact, const FoundMasks& masks,
-                              std::uint8_t epoch, ContactMemory& memory) {
-  memory.internal_edges = contact.find_internal_edges(masks.stamp, masks.fixtures, epoch);
-}
-
 Result<float> TrianglePair::solve(const Setting& setting, const Query& q, const PairPose& pose,
                                   ContactMemory& memory) const {
   PairState cold;
@@ -123,32 +160,54 @@ void TrianglePair::write(b2Manifold* manifold, const Manifold<float>& m,
   write_polygon_manifold(manifold, m, a, b, pose.b_in_a);
 }
 
-// Pairs beyond two triangles.
-
-bool ExactPair::fixed_masks_of(const TriangleContact& contact, bool b_has_edges,
-                               ContactMemory& memory) {
-  const std::optional<ShapeMasks> fixed_a = fixed_polygon_edges(*contact.GetFixtureA());
-  if (!fixed_a) return false;
-  const std::optional<ShapeMasks> fixed_b =
-      b_has_edges ? fixed_polygon_edges(*contact.GetFixtureB()) : ShapeMasks{};
-  if (!fixed_b) return false;
-  memory.internal_edges = {fixed_a->edges, fixed_a->closed_vertices};
-  memory.masks_b = *fixed_b;
-  return true;
-}
-
-void ExactPair::find_masks_of(const TriangleContact& contact, bool b_has_edges,
-                              ContactMemory& memory) {
-  const ShapeMasks a = masks_of(*contact.GetFixtureA());
-  memory.internal_edges = {a.edges, a.closed_vertices};
-  memory.masks_b = b_has_edges ? masks_of(*contact.GetFixtureB()) : ShapeMasks{};
-}
-
 // Two polygons.
 
 void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
                         const PairPose& pose) const {
   write_polygon_manifold(manifold, m, a, b, pose.b_in_a);
+}
+
+// Edge pairs.
+
+void EdgePair::write_faces(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape* b,
+                           const b2Transform& b_in_a) const {
+  manifold->pointCount = mf.point_count;
+  if (mf.point_count == 0) return;
+  if (mf.reference_is_a) {
+    manifold->type = b2Manifold::e_faceA;
+    manifold->localNormal = side_normal(mf.reference_edge);
+    manifold->localPoint = a.m_vertex1;
+  } else {
+    const int e1 = mf.reference_edge;
+    const int e2 = e1 + 1 < b->m_count ? e1 + 1 : 0;
+    manifold->type = b2Manifold::e_faceB;
+    manifold->localNormal = b->m_normals[e1];
+    manifold->localPoint = 0.5f * (b->m_vertices[e1] + b->m_vertices[e2]);
+  }
+  for (int i = 0; i < mf.point_count; ++i) {
+    // Points lie on the incident shape, computed in A's frame: B's go back to B's frame.
+    const b2Vec2 p(mf.points[i].point.x(), mf.points[i].point.y());
+    b2ManifoldPoint& mp = manifold->points[i];
+    mp.localPoint = mf.reference_is_a ? b2MulT(b_in_a, p) : p;
+    mp.normalImpulse = 0;
+    mp.tangentImpulse = 0;
+    mp.id.key = mf.points[i].key;
+  }
+}
+
+float EdgePolygonPair::face_separation(int face, const PairPose& pose) const {
+  if (face < 2) {
+    const b2Vec2 n = side_normal(face);
+    const b2Vec2 m = b2MulT(pose.b_in_a.q, n);  // A's side normal in B's frame
+    float least = b2Dot(m, b.m_vertices[0]);
+    for (int i = 1; i < b.m_count; ++i) least = std::min(least, b2Dot(m, b.m_vertices[i]));
+    return least + b2Dot(n, pose.b_in_a.p - side_start(face));
+  }
+  const int e = face - 2;
+  const b2Vec2& n = b.m_normals[e];
+  const b2Vec2 m = b2Mul(pose.b_in_a.q, n);  // B's normal in A's frame
+  const float least = std::min(b2Dot(m, a.m_vertex1), b2Dot(m, a.m_vertex2));
+  return least - b2Dot(m, pose.b_in_a.p) - b2Dot(n, b.m_vertices[e]);
 }
 
 }  // namespace dyop::box2d::detail

@@ -1,23 +1,26 @@
 #pragma once
 // Internal: the pair families the plug-in's contact answers — two triangles, two polygons (a side
-// with more than 3 vertices), a polygon and a circle — each as what the acts of an evaluation
-// need of it (evaluation.hpp: keep, skip, answer, written once for every family): where the pair
-// is, a face's separation, its internal-edge masks, its manifold function (the solver's answer,
-// written as Box2D's manifold) and Box2D's own function. A world's contact learns its family once,
-// when it is made (`family_of`).
+// with more than 3 vertices), a polygon and a circle, an edge (or a chain's edge) and a polygon, an
+// edge and a circle — each as what the acts of an evaluation need of it (evaluation.hpp: keep,
+// skip, answer, written once for every family): where the pair is, a face's separation, which
+// masks it takes, its manifold function (the solver's answer, written as Box2D's manifold) and
+// Box2D's own function. Each is a function of the shapes, their transforms and the masks handed to
+// it, as Box2D v3's manifold functions are; where the masks come from is the contact's business
+// (contact.hpp). A world's contact learns its family once, when it is made (`family_of`).
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "dyop/box2d.hpp"
 #include "detail/polygon_circle.hpp"
 #include "detail/polygon_pair.hpp"
 #include "dyop/convex_pair.hpp"
-#include "found_masks.hpp"
 #include "installation.hpp"
 #include "recycling.hpp"
 #include "shape_in_place.hpp"
@@ -25,15 +28,28 @@
 
 namespace dyop::box2d::detail {
 
-class TriangleContact;
-
-enum class Family : std::uint8_t { Triangles, Polygons, PolygonAndCircle };
+enum class Family : std::uint8_t {
+  Triangles,
+  Polygons,
+  PolygonAndCircle,
+  EdgeAndPolygon,
+  EdgeAndCircle
+};
 
 // The family of a pair whose shapes were looked at (`look_at_shapes`).
 inline Family family_of(ContactMemory::Shapes shapes) {
   using Shapes = ContactMemory::Shapes;
+  if (shapes >= Shapes::EdgeAndCircle) return Family::EdgeAndCircle;
+  if (shapes >= Shapes::EdgeAndPolygon) return Family::EdgeAndPolygon;
   if (shapes >= Shapes::PolygonAndCircle) return Family::PolygonAndCircle;
   return shapes >= Shapes::Polygons ? Family::Polygons : Family::Triangles;
+}
+
+// True for a pair whose B lies on the back of its two-sided edge (`EdgeBackAndPolygon`,
+// `EdgeBackAndCircle`).
+inline bool on_edge_back(ContactMemory::Shapes shapes) {
+  return shapes == ContactMemory::Shapes::EdgeBackAndPolygon ||
+         shapes == ContactMemory::Shapes::EdgeBackAndCircle;
 }
 
 // What the first look at two polygons finds (their `Shapes` and bounding radii, kept in
@@ -43,6 +59,18 @@ inline Family family_of(ContactMemory::Shapes shapes) {
 void look_at_shapes(const b2PolygonShape& a, const b2PolygonShape& b, ContactMemory& memory);
 // The same for a polygon and a circle.
 void look_at_shapes(const b2PolygonShape& a, const b2CircleShape& b, ContactMemory& memory);
+// The same for an edge and a polygon or a circle whose centroid (centre) lies at `centroid_b_in_a`
+// in the edge's body frame: its side of the edge, for a two-sided edge (ties to the front).
+void look_at_shapes(const b2EdgeShape& a, const b2PolygonShape& b, const b2Vec2& centroid_b_in_a,
+                    ContactMemory& memory);
+void look_at_shapes(const b2EdgeShape& a, const b2CircleShape& b, const b2Vec2& centroid_b_in_a,
+                    ContactMemory& memory);
+
+// The masks of a one-sided edge (`m_oneSided`: a chain's edge, or `SetOneSided`) from its ghost
+// vertices, `Segment`'s bits: its back internal; an end closed where the outline through it
+// (the ghost edge and the edge) is flat or reflex (`turns_flat_or_reflex`: concave seen from the
+// front).
+ShapeMasks one_sided_masks(const b2EdgeShape& edge);
 
 // True when `Polygon<float>` accepts the shape's vertices (Box2D's hull may keep vertices that are
 // collinear within rounding, or a sliver).
@@ -117,6 +145,9 @@ struct TrianglePair {
   const b2PolygonShape& b;
   const b2Transform& xf_b;
 
+  TrianglePair(const b2PolygonShape& shape_a, const b2Transform& xfa, const b2PolygonShape& shape_b,
+               const b2Transform& xfb)
+      : a(shape_a), xf_a(xfa), b(shape_b), xf_b(xfb) {}
   float margin() const { return a.m_radius + b.m_radius; }  // the skins, as Box2D's
   b2Vec2 centroid_b() const { return b.m_centroid; }
   // The plug-in's solver answers under `setting` (else Box2D's function).
@@ -143,12 +174,10 @@ struct TrianglePair {
     q.internal_edges = memory.internal_edges;
   }
   static bool any_masks(const Query& q) { return q.internal_edges.any(); }
-  // Both fixtures' fixed edge data into `memory`; false (nothing written) unless both have it.
-  // Inline (triangle_contact.hpp): every answer with the rule on asks.
-  static inline bool fixed_masks(const TriangleContact& contact, ContactMemory& memory);
-  // Masks found for `contact` now (`TriangleContact::find_internal_edges`) into `memory`.
-  static void find_masks(const TriangleContact& contact, const FoundMasks& masks,
-                         std::uint8_t epoch, ContactMemory& memory);
+  b2Vec2 centroid_a() const { return a.m_centroid; }
+  int count_a() const { return 3; }
+  // Box2D's rules exclude no pair of polygons (see `EdgePair::behind`).
+  static std::optional<float> behind(const PairPose&) { return std::nullopt; }
   Result<float> solve(const Setting& setting, const Query& q, const PairPose& pose,
                       ContactMemory& memory) const;
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
@@ -182,26 +211,27 @@ struct ExactPair {
     q.masks_b = memory.masks_b;
   }
   static bool any_masks(const Query& q) { return q.masks_a.any() || q.masks_b.any(); }
+};
 
- protected:
-  // `TrianglePair::fixed_masks` and `find_masks` for these pairs: A's polygon, and B's when
-  // `b_has_edges` (a circle has no edge: its masks stay empty).
-  static bool fixed_masks_of(const TriangleContact& contact, bool b_has_edges,
-                             ContactMemory& memory);
-  static void find_masks_of(const TriangleContact& contact, bool b_has_edges,
-                            ContactMemory& memory);
+// What the polygon families beyond two triangles share: A is a polygon.
+struct PolygonAPair : ExactPair {
+  const b2PolygonShape& a;
+  const b2Transform& xf_a;
+
+  PolygonAPair(const b2PolygonShape& shape_a, const b2Transform& xfa) : a(shape_a), xf_a(xfa) {}
+  b2Vec2 centroid_a() const { return a.m_centroid; }
+  int count_a() const { return a.m_count; }
+  static std::optional<float> behind(const PairPose&) { return std::nullopt; }
 };
 
 // Two polygons, one of more than 3 vertices.
-struct PolygonPair : ExactPair {
-  const b2PolygonShape& a;
-  const b2Transform& xf_a;
+struct PolygonPair : PolygonAPair {
   const b2PolygonShape& b;
   const b2Transform& xf_b;
 
   PolygonPair(const b2PolygonShape& shape_a, const b2Transform& xfa, const b2PolygonShape& shape_b,
               const b2Transform& xfb)
-      : a(shape_a), xf_a(xfa), b(shape_b), xf_b(xfb) {}
+      : PolygonAPair(shape_a, xfa), b(shape_b), xf_b(xfb) {}
   float margin() const { return a.m_radius + b.m_radius; }
   b2Vec2 centroid_b() const { return b.m_centroid; }
   static bool accepted(const ContactMemory& memory) {
@@ -209,13 +239,6 @@ struct PolygonPair : ExactPair {
   }
   float face_separation(int face, const PairPose& pose) const {
     return detail::face_separation<0>(face, a, b, pose.b_in_a);
-  }
-  static bool fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
-    return fixed_masks_of(contact, true, memory);
-  }
-  static void find_masks(const TriangleContact& contact, const FoundMasks&, std::uint8_t,
-                         ContactMemory& memory) {
-    find_masks_of(contact, true, memory);
   }
   // Inline (below): the solver's answer then stays in registers (measured: docs/measurements.md,
   // "Everyday shapes").
@@ -233,21 +256,21 @@ struct PolygonPair : ExactPair {
   }
 };
 
-// Writes the solver's manifold of polygon `a` and circle `b` (`center`: the circle's centre in
-// A's frame) as Box2D's: A's face, its own normal and midpoint; nearest a vertex, the normal from
-// the vertex to the centre and a point of that plane; the point at the circle's centre, key 0.
+// Writes the solver's manifold of shape A and circle `b` (`center`: the circle's centre in A's
+// frame; `face_normal` and `face_point`: the normal of A's face the solver named, as A holds it,
+// and a point of it) as Box2D's: on that face, its own normal and point; nearest a vertex, the
+// normal from the vertex to the centre and a point of that plane; the point at the circle's centre,
+// key 0.
 inline void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& mf,
-                                  const b2PolygonShape& a, const b2CircleShape& b,
-                                  const b2Vec2& center) {
+                                  const b2Vec2& face_normal, const b2Vec2& face_point,
+                                  const b2CircleShape& b, const b2Vec2& center) {
   manifold->pointCount = mf.point_count;
   if (mf.point_count == 0) return;
-  const int e1 = mf.reference_edge;
-  const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
   const b2Vec2 normal(mf.normal.x(), mf.normal.y());
   manifold->type = b2Manifold::e_faceA;
-  if (normal.x == a.m_normals[e1].x && normal.y == a.m_normals[e1].y) {
-    manifold->localNormal = a.m_normals[e1];
-    manifold->localPoint = 0.5f * (a.m_vertices[e1] + a.m_vertices[e2]);
+  if (normal.x == face_normal.x && normal.y == face_normal.y) {
+    manifold->localNormal = face_normal;
+    manifold->localPoint = face_point;
   } else {
     manifold->localNormal = normal;
     manifold->localPoint = center - (mf.points[0].separation + b.m_radius) * normal;
@@ -261,15 +284,13 @@ inline void write_circle_manifold(b2Manifold* manifold, const Manifold<float>& m
 
 // A polygon (fixture A) and a circle (fixture B), in Box2D's registry order; its manifolds are
 // `e_faceA`, as Box2D's (see `write`).
-struct PolygonCirclePair : ExactPair {
-  const b2PolygonShape& a;
-  const b2Transform& xf_a;
+struct PolygonCirclePair : PolygonAPair {
   const b2CircleShape& b;
   const b2Transform& xf_b;
 
   PolygonCirclePair(const b2PolygonShape& shape_a, const b2Transform& xfa,
                     const b2CircleShape& shape_b, const b2Transform& xfb)
-      : a(shape_a), xf_a(xfa), b(shape_b), xf_b(xfb) {}
+      : PolygonAPair(shape_a, xfa), b(shape_b), xf_b(xfb) {}
   // The polygon's skin: `b2CollidePolygonAndCircle` keeps a point up to the two radii's sum.
   float margin() const { return a.m_radius; }
   b2Vec2 centroid_b() const { return b.m_p; }
@@ -280,13 +301,6 @@ struct PolygonCirclePair : ExactPair {
   float face_separation(int face, const PairPose& pose) const {
     return b2Dot(a.m_normals[face], pose.centroid_b_in_a - a.m_vertices[face]) - b.m_radius;
   }
-  static bool fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
-    return fixed_masks_of(contact, false, memory);
-  }
-  static void find_masks(const TriangleContact& contact, const FoundMasks&, std::uint8_t,
-                         ContactMemory& memory) {
-    find_masks_of(contact, false, memory);
-  }
   // Inline (below), at both of the answer's calls: the solver's answer then stays in registers
   // (measured: docs/measurements.md, "Everyday shapes").
   [[gnu::always_inline]] inline Result<float> solve(const Setting&, const Query& q,
@@ -294,7 +308,10 @@ struct PolygonCirclePair : ExactPair {
   // Inline: the answer's manifold then stays in registers (measured: docs/measurements.md,
   // "Everyday shapes").
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const {
-    write_circle_manifold(manifold, m, a, b, pose.centroid_b_in_a);
+    const int e1 = m.reference_edge;
+    const int e2 = e1 + 1 < a.m_count ? e1 + 1 : 0;
+    write_circle_manifold(manifold, m, a.m_normals[e1],
+                          0.5f * (a.m_vertices[e1] + a.m_vertices[e2]), b, pose.centroid_b_in_a);
   }
   void box2d(b2Manifold* manifold) const {
     b2CollidePolygonAndCircle(manifold, &a, xf_a, &b, xf_b);
@@ -307,6 +324,114 @@ struct PolygonCirclePair : ExactPair {
                          Skip) {
     count(to, setting, memory);
   }
+};
+
+// What the edge families share: A is an edge (a `b2EdgeShape`, or a chain's child edge made for
+// the evaluation), read by the solver as a `Segment` (`EdgeInPlace`); answered exactly unless
+// `Config::edges_and_chains` is off; Box2D's one-sided rule first (`behind`).
+struct EdgePair : ExactPair {
+  const b2EdgeShape& a;
+  const b2Transform& xf_a;
+
+  EdgePair(const b2EdgeShape& edge, const b2Transform& xfa) : a(edge), xf_a(xfa) {}
+  static bool solver_on(const Setting& setting) {
+    return ExactPair::solver_on(setting) && setting.config.edges_and_chains;
+  }
+  b2Vec2 centroid_a() const { return 0.5f * (a.m_vertex1 + a.m_vertex2); }
+  static constexpr int count_a() { return 2; }
+  // Box2D's one-sided rule: a one-sided edge gives no contact to a B whose centroid (a circle's
+  // centre) lies behind its line (`b2CollideEdgeAndPolygon`'s test, in the same arithmetic). Then
+  // how far behind (metres, ≥ 0: B keeps no contact while it moves less); else nothing.
+  std::optional<float> behind(const PairPose& pose) const {
+    if (!a.m_oneSided) return std::nullopt;
+    b2Vec2 along = a.m_vertex2 - a.m_vertex1;
+    along.Normalize();
+    const float offset = b2Dot(b2Vec2(along.y, -along.x), pose.centroid_b_in_a - a.m_vertex1);
+    if (!(offset < 0.0f)) return std::nullopt;
+    return -offset;
+  }
+  // The segment as the solver reads it (its front normal computed as Box2D's).
+  EdgeInPlace segment(const PairPose& pose) const { return EdgeInPlace(a, pose.size_bound()); }
+  // A's side `face`'s unit normal (0 the front, 1 the back), as the solver reads it.
+  b2Vec2 side_normal(int face) const {
+    const Vec2<float> n = EdgeInPlace(a, 0).normal(face);
+    return {n.x(), n.y()};
+  }
+  // The first vertex of A's side `face` (the front runs from `m_vertex1`, the back back to it).
+  const b2Vec2& side_start(int face) const { return face == 0 ? a.m_vertex1 : a.m_vertex2; }
+  // Writes the solver's manifold `mf` with A's side as the reference face: `e_faceA`, its normal
+  // and its first end, B's points in B's frame (`b_in_a`: B's body frame given in A's); B's face:
+  // `e_faceB`, that face's own normal and midpoint, the points on the edge in A's frame.
+  void write_faces(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape* b,
+                   const b2Transform& b_in_a) const;
+  // A's masks: a one-sided edge's from its ghost vertices, a two-sided edge's as its contact
+  // found them or its caller set them (`ContactMemory::internal_edges`); B's from `masks_b`.
+  void take_masks(Query& q, const ContactMemory& memory) const {
+    q.masks_a = a.m_oneSided ? one_sided_masks(a)
+                             : ShapeMasks{memory.internal_edges.edges,
+                                          memory.internal_edges.closed_vertices};
+    q.masks_b = memory.masks_b;
+  }
+  static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
+    to.edge_pairs.add();
+    if (solver_on(setting) && accepted_shapes(memory)) to.exact_pairs.add();
+  }
+  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
+                         Skip) {
+    count(to, setting, memory);
+  }
+  static bool accepted_shapes(const ContactMemory& memory) {
+    using Shapes = ContactMemory::Shapes;
+    return memory.shapes == Shapes::EdgeAndPolygon || memory.shapes == Shapes::EdgeBackAndPolygon ||
+           memory.shapes == Shapes::EdgeAndCircle || memory.shapes == Shapes::EdgeBackAndCircle;
+  }
+  static bool accepted(const ContactMemory& memory) { return accepted_shapes(memory); }
+};
+
+// An edge (fixture A) and a polygon (B).
+struct EdgePolygonPair : EdgePair {
+  const b2PolygonShape& b;
+  const b2Transform& xf_b;
+
+  EdgePolygonPair(const b2EdgeShape& edge, const b2Transform& xfa, const b2PolygonShape& shape_b,
+                  const b2Transform& xfb)
+      : EdgePair(edge, xfa), b(shape_b), xf_b(xfb) {}
+  float margin() const { return a.m_radius + b.m_radius; }
+  b2Vec2 centroid_b() const { return b.m_centroid; }
+  float face_separation(int face, const PairPose& pose) const;
+  inline Result<float> solve(const Setting&, const Query& q, const PairPose& pose,
+                             ContactMemory&) const;
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const {
+    write_faces(manifold, m, &b, pose.b_in_a);
+  }
+  void box2d(b2Manifold* manifold) const { b2CollideEdgeAndPolygon(manifold, &a, xf_a, &b, xf_b); }
+};
+
+// An edge (fixture A) and a circle (B).
+struct EdgeCirclePair : EdgePair {
+  const b2CircleShape& b;
+  const b2Transform& xf_b;
+
+  EdgeCirclePair(const b2EdgeShape& edge, const b2Transform& xfa, const b2CircleShape& shape_b,
+                 const b2Transform& xfb)
+      : EdgePair(edge, xfa), b(shape_b), xf_b(xfb) {}
+  // As Box2D's `b2CollideEdgeAndCircle`: a point up to both radii apart.
+  float margin() const { return a.m_radius; }
+  b2Vec2 centroid_b() const { return b.m_p; }
+  float face_separation(int face, const PairPose& pose) const {
+    return b2Dot(side_normal(face), pose.centroid_b_in_a - side_start(face)) - b.m_radius;
+  }
+  [[gnu::always_inline]] inline Result<float> solve(const Setting&, const Query& q,
+                                                    const PairPose& pose, ContactMemory&) const {
+    const b2Vec2& center = pose.centroid_b_in_a;
+    return dyop::detail::collide_polygon_circle(segment(pose),
+                                                Circle<float>{{center.x, center.y}, b.m_radius}, q);
+  }
+  void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const {
+    write_circle_manifold(manifold, m, side_normal(m.reference_edge), a.m_vertex1, b,
+                          pose.centroid_b_in_a);
+  }
+  void box2d(b2Manifold* manifold) const { b2CollideEdgeAndCircle(manifold, &a, xf_a, &b, xf_b); }
 };
 
 // The solver with both vertex counts known to the compiler (`Counted`).
@@ -343,6 +468,22 @@ inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const Pa
     default:
       return dyop::detail::collide_polygons(InPlace(a, pose.size_bound()),
                                             Placed(b, pose.b_in_a, pose.size_bound()), q);
+  }
+}
+
+inline Result<float> EdgePolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
+                                            ContactMemory&) const {
+  const float bound = pose.size_bound();
+  const EdgeInPlace s = segment(pose);
+  switch (b.m_count) {
+    case 3:
+      return dyop::detail::collide_polygons(s, Counted<Placed, 3>(b, pose.b_in_a, bound), q);
+    case 4:
+      return dyop::detail::collide_polygons(s, Counted<Placed, 4>(b, pose.b_in_a, bound), q);
+    case 6:
+      return dyop::detail::collide_polygons(s, Counted<Placed, 6>(b, pose.b_in_a, bound), q);
+    default:
+      return dyop::detail::collide_polygons(s, Placed(b, pose.b_in_a, bound), q);
   }
 }
 

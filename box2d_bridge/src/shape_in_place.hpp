@@ -1,7 +1,9 @@
 #pragma once
-// Internal: a `b2PolygonShape` read by the exact solver in place (`dyop::detail::collide_polygons`,
-// `collide_polygon_circle`), without building a `Polygon`.
+// Internal: a `b2PolygonShape` or a `b2EdgeShape` read by the exact solver in place
+// (`dyop::detail::collide_polygons`, `collide_polygon_circle`), without building a `Polygon` or a
+// `Segment`.
 
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_math.h>
 #include <box2d/b2_polygon_shape.h>
 
@@ -67,6 +69,36 @@ class Counted : public P {
   using P::P;
   static constexpr int count() { return N; }
   static constexpr int next(int i) { return i + 1 < N ? i + 1 : 0; }
+};
+
+// A `b2EdgeShape` in its body frame as the solver reads a segment (`Segment`), in place: vertex 0
+// `m_vertex1`, vertex 1 `m_vertex2`, normal 0 the front as Box2D computes its edge normal
+// (normalised by the reciprocal of the length), normal 1 its opposite. `size_bound` as
+// `InPlace`'s.
+class EdgeInPlace {
+ public:
+  EdgeInPlace(const b2EdgeShape& edge, float size_bound) : edge_(edge), size_bound_(size_bound) {
+    b2Vec2 along = edge.m_vertex2 - edge.m_vertex1;
+    length_ = along.Normalize();
+    front_ = {along.y, -along.x};
+  }
+  static constexpr int count() { return 2; }
+  Vec2<float> vertex(int i) const {
+    const b2Vec2& v = i == 0 ? edge_.m_vertex1 : edge_.m_vertex2;
+    return {v.x, v.y};
+  }
+  Vec2<float> normal(int i) const { return i == 0 ? front_ : Vec2<float>(-front_); }
+  static constexpr int next(int i) { return 1 - i; }
+  float size() const { return length_; }
+  float size_bound() const { return size_bound_; }
+  static constexpr int input_vertex(int i) { return i; }
+  static constexpr int input_edge(int i) { return i; }
+
+ private:
+  const b2EdgeShape& edge_;
+  float size_bound_;
+  float length_;
+  Vec2<float> front_;
 };
 
 }  // namespace dyop::box2d::detail

@@ -20,6 +20,7 @@ void add_to(Stats& to, const ThreadCounters& from) {
   }
   to.polygon_pairs += from.polygon_pairs.get();
   to.circle_pairs += from.circle_pairs.get();
+  to.edge_pairs += from.edge_pairs.get();
   to.exact_pairs += from.exact_pairs.get();
   to.manifolds += from.manifolds.get();
   to.fallbacks += from.fallbacks.get();
@@ -31,6 +32,7 @@ void clear(ThreadCounters& c) {
   for (Counter& x : c.triangle_pairs) x.clear();
   c.polygon_pairs.clear();
   c.circle_pairs.clear();
+  c.edge_pairs.clear();
   c.exact_pairs.clear();
   c.manifolds.clear();
   c.fallbacks.clear();

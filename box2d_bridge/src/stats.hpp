@@ -37,6 +37,7 @@ struct ThreadCounters {
   std::array<Counter, backend_count> triangle_pairs;
   Counter polygon_pairs;
   Counter circle_pairs;
+  Counter edge_pairs;
   Counter exact_pairs;
   Counter manifolds;
   Counter fallbacks;

@@ -1,7 +1,8 @@
 // A world of circles, boxes, a pentagon, edges and triangles: the plug-in answers every polygon
-// pair and polygon–circle pair exactly as its single-pair entry points do (`collide_polygons`,
-// `collide_polygon_and_circle`: the exact solver, or Box2D's own functions under `Backend::Box2D`),
-// and leaves circle–circle and edge pairs to Box2D's own contacts.
+// pair, polygon–circle pair and edge pair exactly as its single-pair entry points do
+// (`collide_polygons`, `collide_polygon_and_circle`, `collide_edge_and_polygon`,
+// `collide_edge_and_circle`: the exact solver, or Box2D's own functions under `Backend::Box2D`),
+// and leaves circle–circle pairs to Box2D's own contact.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -56,8 +57,27 @@ class Checker : public b2ContactListener {
       if (!same(*contact->GetManifold(), expected)) ++mismatches;
       return;
     }
+    if (fa->GetType() == b2Shape::e_edge) {
+      ++edge_pairs;
+      const auto& edge = *static_cast<const b2EdgeShape*>(fa->GetShape());
+      const b2Transform& xa = fa->GetBody()->GetTransform();
+      const b2Transform& xb = fb->GetBody()->GetTransform();
+      if (fb->GetType() == b2Shape::e_circle) {
+        collide_edge_and_circle(&expected, backend_, edge, xa,
+                                *static_cast<const b2CircleShape*>(fb->GetShape()), xb, nullptr,
+                                config_);
+      } else {
+        collide_edge_and_polygon(&expected, backend_, edge, xa,
+                                 *static_cast<const b2PolygonShape*>(fb->GetShape()), xb, nullptr,
+                                 config_);
+      }
+      ++own_evaluations;
+      own_manifolds += expected.pointCount > 0;
+      if (!same(*contact->GetManifold(), expected)) ++mismatches;
+      return;
+    }
     if (fa->GetType() != b2Shape::e_polygon || fb->GetType() != b2Shape::e_polygon) {
-      ++other_pairs;  // circles with circles, and edges: Box2D's own contact classes
+      ++other_pairs;  // circles with circles: Box2D's own contact class
       return;
     }
     const auto* a = static_cast<const b2PolygonShape*>(fa->GetShape());
@@ -78,6 +98,7 @@ class Checker : public b2ContactListener {
   int triangle_pairs = 0;
   int polygon_pairs = 0;
   int circle_pairs = 0;
+  int edge_pairs = 0;
   int other_pairs = 0;
   int mismatches = 0;
   std::uint64_t own_triangle_evaluations = 0;
@@ -169,16 +190,19 @@ TEST_P(MixedWorld, EveryPairIsTheSinglePairEntryPointsAnswer) {
   const Stats s = stats();
   const std::uint64_t triangle_pairs = s.triangles(GetParam()) - checker.own_triangle_evaluations;
   const std::uint64_t manifolds = s.manifolds - checker.own_manifolds;
-  const std::uint64_t beyond = s.polygon_pairs + s.circle_pairs - checker.own_evaluations;
+  const std::uint64_t beyond =
+      s.polygon_pairs + s.circle_pairs + s.edge_pairs - checker.own_evaluations;
   std::cout << name(GetParam()) << ": touching triangle pairs " << checker.triangle_pairs
             << ", other polygon pairs " << checker.polygon_pairs << ", polygon-circle pairs "
-            << checker.circle_pairs << ", circle/edge pairs " << checker.other_pairs
-            << "; stats: triangle pairs " << triangle_pairs << ", other pairs " << beyond
-            << ", manifolds " << manifolds << ", fallbacks " << s.fallbacks << "\n";
+            << checker.circle_pairs << ", edge pairs " << checker.edge_pairs
+            << ", circle-circle pairs " << checker.other_pairs << "; stats: triangle pairs "
+            << triangle_pairs << ", other pairs " << beyond << ", manifolds " << manifolds
+            << ", fallbacks " << s.fallbacks << "\n";
   EXPECT_EQ(checker.mismatches, 0);
   EXPECT_GT(checker.triangle_pairs, 0);
   EXPECT_GT(checker.polygon_pairs, 0);
   EXPECT_GT(checker.circle_pairs, 0);
+  EXPECT_GT(checker.edge_pairs, 0);
   EXPECT_GT(checker.other_pairs, 0);
   // The exact solver answered the pairs beyond triangles, but under Box2D's own backend.
   EXPECT_EQ(s.exact_pairs == 0, GetParam() == Backend::Box2D);
@@ -186,9 +210,9 @@ TEST_P(MixedWorld, EveryPairIsTheSinglePairEntryPointsAnswer) {
   // Counted where they belong: every touching pair was evaluated (and more, in the broad phase's
   // overlapping pairs that do not touch), and every touching triangle pair had a manifold.
   EXPECT_GE(triangle_pairs, static_cast<std::uint64_t>(checker.triangle_pairs));
-  EXPECT_GE(beyond, static_cast<std::uint64_t>(checker.polygon_pairs + checker.circle_pairs));
-  EXPECT_EQ(manifolds, static_cast<std::uint64_t>(checker.triangle_pairs + checker.polygon_pairs +
-                                                  checker.circle_pairs));
+  const int beyond_touching = checker.polygon_pairs + checker.circle_pairs + checker.edge_pairs;
+  EXPECT_GE(beyond, static_cast<std::uint64_t>(beyond_touching));
+  EXPECT_EQ(manifolds, static_cast<std::uint64_t>(checker.triangle_pairs + beyond_touching));
   EXPECT_EQ(s.fallbacks, 0u);
   for (Backend other : all_backends) {
     if (other != GetParam()) {

@@ -1,18 +1,28 @@
 #pragma once
 /// \file
 /// The Box2D 2.4 plug-in: routes the contacts of triangle pairs through DyOP-PD (or any other
-/// method of the library), and those of every other polygon pair and polygon–circle pair through
-/// the exact solver, inside an unchanged Box2D program.
+/// method of the library), and those of every other polygon pair, polygon–circle pair and edge or
+/// chain pair through the exact solver, inside an unchanged Box2D program.
 ///
 ///     #include <dyop/box2d.hpp>
 ///     dyop::box2d::install(dyop::box2d::Backend::Dyop);  // at any moment
 ///
-/// The plug-in registers its contact for polygon–polygon and polygon–circle pairs in Box2D's
-/// contact registry. A pair of two triangles (3-vertex `b2PolygonShape`s) goes to the installed
-/// backend; every other polygon pair (4 to 8 vertices on a side) and every polygon–circle pair to
+/// The plug-in registers its contact in Box2D's contact registry for polygon–polygon,
+/// polygon–circle, edge–polygon, edge–circle, chain–polygon and chain–circle pairs. A pair of two
+/// triangles (3-vertex `b2PolygonShape`s) goes to the installed backend; every other pair to
 /// `dyop::collide` (`dyop/convex_pair.hpp`), with the internal-edge rule, under every backend but
-/// `Box2D` (Box2D's own functions); `Config::triangles_only` keeps to triangle pairs. Circle–circle
-/// pairs, edges and chains keep Box2D's own contacts.
+/// `Box2D` (Box2D's own functions). `Config::edges_and_chains` off leaves edges and chains to
+/// Box2D, `Config::triangles_only` everything but triangle pairs. Circle–circle pairs keep Box2D's
+/// own contact.
+///
+/// Edges and chains (A, as Box2D orders them; a chain pair is one of its child edges): a one-sided
+/// edge (`SetOneSided`, every chain's edge) keeps Box2D's one-sided meaning (a body whose centroid,
+/// a circle's centre, lies behind it gets no contact) and takes the rule from its ghost vertices:
+/// no push along its back, and none from an end where the chain goes on flat or turns concave
+/// (beyond the rule's flat-face tolerance, 1e-3 rad). A two-sided edge (`SetTwoSided`) that meets
+/// other edges or polygons end to end takes the same rule from its neighbours on the side its
+/// contact's body was on when the contact began (its centroid against the edge's line, ties to the
+/// normal's side), so that bodies glide on either side; alone, it answers both sides, as Box2D's.
 ///
 /// Conventions (Box2D's manifold contract, kept exactly):
 /// - The manifold is `e_faceA` or `e_faceB`: `localNormal` is the reference polygon's own
@@ -37,6 +47,7 @@
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_common.h>
+#include <box2d/b2_edge_shape.h>
 #include <box2d/b2_math.h>
 #include <box2d/b2_polygon_shape.h>
 
@@ -173,10 +184,15 @@ struct Config {
   float recycle_distance = default_recycle_distance;
 
   /// Only triangle pairs go to the backend, as in version 0.1: other polygon pairs to
-  /// `b2CollidePolygons`, polygon–circle pairs keep Box2D's own contact. Off by default: every
-  /// polygon pair and polygon–circle pair is answered exactly (`dyop::collide`), with the
-  /// internal-edge rule.
+  /// `b2CollidePolygons`, polygon–circle, edge and chain pairs keep Box2D's own contacts. Off by
+  /// default: every polygon pair and polygon–circle pair is answered exactly (`dyop::collide`),
+  /// with the internal-edge rule.
   bool triangles_only = false;
+
+  /// Edge and chain pairs (`b2EdgeShape`, `b2ChainShape` against polygons and circles) are
+  /// answered exactly with the internal-edge rule (see the file's head). Off: Box2D's own contacts
+  /// for them. On by default.
+  bool edges_and_chains = true;
 
   /// Every skip on (the default), internal edges as by default.
   static Config all() { return {}; }
@@ -194,7 +210,8 @@ struct Config {
 inline bool operator==(const Config& x, const Config& y) {
   return x.bounds_early_out == y.bounds_early_out && x.warm_axis == y.warm_axis &&
          x.lin_canny_cache == y.lin_canny_cache && x.internal_edges == y.internal_edges &&
-         x.recycle_distance == y.recycle_distance && x.triangles_only == y.triangles_only;
+         x.recycle_distance == y.recycle_distance && x.triangles_only == y.triangles_only &&
+         x.edges_and_chains == y.edges_and_chains;
 }
 
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
@@ -235,6 +252,15 @@ struct ContactMemory {
     InvalidPolygons,   ///< a side with more than 3 vertices that `Polygon<float>` refuses: Box2D
     PolygonAndCircle,  ///< a polygon (A) and a circle (B): `dyop::collide`, or Box2D's own
     InvalidPolygonAndCircle,  ///< a polygon and a circle, one refused (`ConvexError`): Box2D
+    /// An edge or a chain's edge (A) and a polygon on its front: the side a two-sided edge's pair
+    /// keeps (decided by the first look), a one-sided edge's only side. `dyop::collide`, or
+    /// Box2D's.
+    EdgeAndPolygon,
+    EdgeBackAndPolygon,     ///< a two-sided edge and a polygon on its back (see `EdgeAndPolygon`)
+    InvalidEdgeAndPolygon,  ///< an edge and a polygon, one refused (`ConvexError`): Box2D
+    EdgeAndCircle,          ///< an edge and a circle on its front (see `EdgeAndPolygon`)
+    EdgeBackAndCircle,      ///< a two-sided edge and a circle on its back
+    InvalidEdgeAndCircle,   ///< an edge and a circle, one refused (`ConvexError`): Box2D
   };
   /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
   PairState warm_start;
@@ -248,7 +274,8 @@ struct ContactMemory {
   /// The pair's internal-edge masks (`Query::internal_edges`, Box2D's vertex order: A's bits, then
   /// B's); a world's contact finds them itself, a caller of `collide_polygons` sets them. For a
   /// pair beyond two triangles, `edges` and `closed_vertices` hold A's masks (`ShapeMasks`, up to
-  /// 8 bits) and `masks_b` B's.
+  /// 8 bits; an edge's: `Segment`'s, bit 0 its front, 1 its back, vertices `m_vertex1`,
+  /// `m_vertex2`) and `masks_b` B's.
   InternalEdges internal_edges{};
   /// B's masks of a pair beyond two triangles (`ShapeMasks`; unused for triangle pairs).
   ShapeMasks masks_b{};
@@ -298,6 +325,23 @@ void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
                                 ContactMemory* memory = nullptr,
                                 const Config& config = Config::all());
 
+/// The plug-in's answer for an edge (or a chain's child edge, from `b2ChainShape::GetChildEdge`) as
+/// fixture A and a polygon, exactly what its contact's `Evaluate` computes with `config`: the exact
+/// solver with Box2D's one-sided rule and, for a one-sided edge, the masks of its ghost vertices;
+/// for a two-sided edge, `memory`'s masks (`ContactMemory::internal_edges`; none: both sides, as
+/// Box2D's); B's from `memory.masks_b`. Box2D's `b2CollideEdgeAndPolygon` for `Backend::Box2D`,
+/// `Config::triangles_only` and `Config::edges_and_chains` off. Counted in `stats`.
+void collide_edge_and_polygon(b2Manifold* manifold, Backend backend, const b2EdgeShape& edge,
+                              const b2Transform& xf_a, const b2PolygonShape& polygon,
+                              const b2Transform& xf_b, ContactMemory* memory = nullptr,
+                              const Config& config = Config::all());
+
+/// The same for an edge and a circle (`b2CollideEdgeAndCircle`).
+void collide_edge_and_circle(b2Manifold* manifold, Backend backend, const b2EdgeShape& edge,
+                             const b2Transform& xf_a, const b2CircleShape& circle,
+                             const b2Transform& xf_b, ContactMemory* memory = nullptr,
+                             const Config& config = Config::all());
+
 /// Counters since the last `install` or `reset_stats`, summed over every thread that evaluated
 /// pairs (with one world, or worlds stepped one after another, the counts of those worlds).
 struct Stats {
@@ -307,25 +351,30 @@ struct Stats {
   std::uint64_t polygon_pairs = 0;
   /// Polygon–circle pairs evaluated by the plug-in's contact (none with `Config::triangles_only`).
   std::uint64_t circle_pairs = 0;
-  /// Of `polygon_pairs` and `circle_pairs`, those answered exactly by the solver (`dyop::collide`,
-  /// for every backend but `Box2D`); the others by Box2D's own functions (`Backend::Box2D`,
-  /// `Config::triangles_only`, or a polygon `Polygon<float>` refuses, also counted in `fallbacks`).
+  /// Edge and chain pairs (against polygons and circles) evaluated by the plug-in's contact (none
+  /// with `Config::triangles_only` or `Config::edges_and_chains` off).
+  std::uint64_t edge_pairs = 0;
+  /// Of `polygon_pairs`, `circle_pairs` and `edge_pairs`, those answered exactly by the solver
+  /// (`dyop::collide`, for every backend but `Box2D`); the others by Box2D's own functions
+  /// (`Backend::Box2D`, `Config::triangles_only`, or a shape the solver refuses, also counted in
+  /// `fallbacks`).
   std::uint64_t exact_pairs = 0;
-  /// Evaluations of the plug-in's pairs (triangle pairs, other polygon pairs, polygon–circle
-  /// pairs) that produced a non-empty manifold.
+  /// Evaluations of the plug-in's pairs (every family) that produced a non-empty manifold.
   std::uint64_t manifolds = 0;
-  /// Triangle pairs the backend could not answer (`Status::Invalid`, or a triangle rejected by
-  /// `Triangle<float>::make`), answered by `b2CollidePolygons` instead so that the simulation goes
-  /// on. Nonzero means the backend's figures include Box2D's answers.
+  /// Pairs of any family the backend or the solver could not answer (`Status::Invalid`, or a shape
+  /// it refuses: `Triangle<float>::make`, `Polygon<float>`, `Segment<float>`), answered by Box2D's
+  /// function instead so that the simulation goes on. Nonzero means the figures include Box2D's
+  /// answers.
   std::uint64_t fallbacks = 0;
   /// Triangle-pair evaluations answered without running the backend, per reason (index:
-  /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`.
+  /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`. The other families skip
+  /// too, counted in their own counts (`polygon_pairs`, `circle_pairs`, `edge_pairs`) only.
   std::array<std::uint64_t, skip_count> skipped{};
-  /// Triangle-pair evaluations run by an exact backend with internal edges or closed vertices in
+  /// Evaluations of any family run by an exact solver with internal edges or closed vertices in
   /// force (`Config::internal_edges`): the pairs whose contact the rule may change.
   std::uint64_t internal_edge_pairs = 0;
-  /// Triangle-pair evaluations that kept the contact's manifold (`Config::recycle_distance`);
-  /// included in `triangle_pairs`.
+  /// Evaluations of any family that kept the contact's manifold (`Config::recycle_distance`);
+  /// included in their family's count.
   std::uint64_t recycled = 0;
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }

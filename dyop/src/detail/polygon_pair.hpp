@@ -313,6 +313,10 @@ bool axis_allowed(const F& f, const ConvexQuery<T>& q, int k) {
     d[w] = n.dot(other_v[w]);
     closed |= ((other_masks.closed_vertices >> f.input_vertex(!own_a, w)) & 1u) << w;
     internal |= ((other_masks.edges >> f.input_edge(!own_a, w)) & 1u) << w;
+    // A segment's side lying flat on the face realises the axis only when it faces the face (a
+    // polygon's flat outline edge at its deepest vertex always does): back to back, the face
+    // would push through the segment's other side.
+    if (count == 2) internal |= static_cast<unsigned>(!(f.normal(!own_a, w).dot(n) < 0)) << w;
   }
   return !realised_inside(d, other_v.data(), count, closed, internal);
 }

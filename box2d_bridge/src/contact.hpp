@@ -1,8 +1,9 @@
 #pragma once
-// Internal: the plug-in's Box2D contact for polygon–polygon and polygon–circle pairs (the name is
-// 0.1's, when it took triangle pairs alone).
+// Internal: the plug-in's Box2D contact, for every shape pair it takes (`taken_pairs`): a pair
+// family's evaluation (evaluation.hpp) with the masks the contact finds or reads for it.
 
 #include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
 #include <box2d/b2_contact.h>
 #include <box2d/b2_contact_manager.h>
 #include <box2d/b2_fixture.h>
@@ -10,6 +11,7 @@
 
 #include <cstring>
 #include <optional>
+#include <type_traits>
 
 #include "dyop/box2d.hpp"
 #include "edge_data.hpp"
@@ -34,12 +36,12 @@ inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   return static_cast<std::uint32_t>(x >> 32);
 }
 
-// Box2D's contact for a polygon pair or a polygon–circle pair made while the plug-in is installed:
-// `Evaluate` is the plug-in's evaluation with whatever is installed at the time (Box2D's own answer
-// once uninstalled). Holds no heap memory (b2World's destructor frees contacts without running
-// their destructors): what the pair remembers between steps is its `ContactMemory`, inside the
-// object. Last step's manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
-class TriangleContact final : public b2Contact {
+// Box2D's contact for a pair the plug-in takes, made while it is installed: `Evaluate` is the
+// plug-in's evaluation with whatever is installed at the time (Box2D's own answer once
+// uninstalled). Holds no heap memory (b2World's destructor frees contacts without running their
+// destructors): what the pair remembers between steps is its `ContactMemory`, inside the object.
+// Last step's manifold needs no copy: Box2D passes it back to `Evaluate` in `m_manifold`.
+class Contact final : public b2Contact {
  public:
   // Box2D's create / destroy functions for the registry (b2ContactCreateFcn / b2ContactDestroyFcn).
   static b2Contact* create(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int32 index_b,
@@ -50,7 +52,7 @@ class TriangleContact final : public b2Contact {
   void Evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b) override;
 
   // The plug-in's contact `c` is, or nullptr (Box2D's own, made before an install).
-  static TriangleContact* ours(b2Contact* c);
+  static Contact* ours(b2Contact* c);
 
   // What its internal-edge masks would be found under now (`FoundMasks::stamp`): install `epoch`
   // and the frames of its static bodies, never 0 nor `FoundMasks::fixed_stamp`. Why a static body's
@@ -128,6 +130,15 @@ class TriangleContact final : public b2Contact {
     return InternalEdges::pair(*a, *b);
   }
 
+  // Its pair's masks, for the pair's family (`memory.shapes`), into `memory` when nothing need be
+  // found: each fixture's fixed edge data (`fix_internal_edges`), a one-sided edge's own (its
+  // ghost vertices, read by the family), a circle's none; false (nothing written) otherwise.
+  // Every answer with the rule on asks.
+  bool fixed_masks(ContactMemory& memory) const;
+  // Its pair's masks found now (`masks`: what it found before, under install `epoch`) into
+  // `memory`: a triangle pair's by `find_internal_edges`, others fixture by fixture.
+  void find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMemory& memory) const;
+
   // Its next evaluation computes afresh, whatever it keeps (its fixed edge data was refreshed).
   void recompute() { recycling_.slack = 0; }
 
@@ -139,7 +150,7 @@ class TriangleContact final : public b2Contact {
   bool static_stamp_stale(std::uint8_t epoch) const;
 
  private:
-  TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b);
+  Contact(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int32 index_b);
 
   // The masks of `fixture`'s triangle (one of its two), bits 0..2, from another contact of its
   // body with the same fixture whose masks were found under the stamp that contact would have
@@ -148,22 +159,37 @@ class TriangleContact final : public b2Contact {
   // contact list is short (a static body's spans the world).
   std::optional<InternalEdges> half_from_body(const b2Fixture& fixture, std::uint8_t epoch) const;
 
-  // Its polygon (fixture A: the registry hands polygon–polygon and polygon–circle pairs here).
-  const b2PolygonShape& polygon_a() const {
-    return *static_cast<const b2PolygonShape*>(m_fixtureA->GetShape());
+  // Its edge (fixture A of an edge family): the fixture's own, or its chain's child edge, made in
+  // `child`.
+  const b2EdgeShape& edge_a(b2EdgeShape& child) const {
+    const b2Shape* shape = m_fixtureA->GetShape();
+    if (shape->m_type == b2Shape::e_edge) return *static_cast<const b2EdgeShape*>(shape);
+    static_cast<const b2ChainShape*>(shape)->GetChildEdge(&child, m_indexA);
+    return child;
   }
-  // Its pair as its family's (`TrianglePair`, `PolygonPair`, `PolygonCirclePair`) at the bodies'
-  // transforms `xf_a`, `xf_b`.
-  template <class Pair>
-  Pair pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const;
+  // Calls `f(pair)` with its pair as its family's (`TrianglePair`, ..., `EdgeCirclePair`) at the
+  // bodies' transforms `xf_a`, `xf_b`.
+  template <class Pair, class F>
+  [[gnu::always_inline]] void with_pair(const b2Transform& xf_a, const b2Transform& xf_b,
+                                        const F& f) const {
+    const b2Shape* b = m_fixtureB->GetShape();
+    using B = std::remove_cv_t<std::remove_reference_t<decltype(Pair::b)>>;
+    const B& shape_b = *static_cast<const B*>(b);
+    if constexpr (std::is_base_of_v<EdgePair, Pair>) {
+      b2EdgeShape child;
+      f(Pair(edge_a(child), xf_a, shape_b, xf_b));
+    } else {
+      f(Pair(*static_cast<const b2PolygonShape*>(m_fixtureA->GetShape()), xf_a, shape_b, xf_b));
+    }
+  }
 
   // `Evaluate`'s two paths for contact `c` of a pair family: keep, else skip or answer; skip or
   // answer. Static: `Paths` holds plain function pointers.
   template <class Pair>
-  static void keep_or_go_on(TriangleContact& c, b2Manifold* manifold, const b2Transform& xf_a,
+  static void keep_or_go_on(Contact& c, b2Manifold* manifold, const b2Transform& xf_a,
                             const b2Transform& xf_b);
   template <class Pair>
-  static void skip_or_answer(TriangleContact& c, b2Manifold* manifold, const b2Transform& xf_a,
+  static void skip_or_answer(Contact& c, b2Manifold* manifold, const b2Transform& xf_a,
                              const b2Transform& xf_b);
   struct Paths;
   template <class Pair>
@@ -174,12 +200,6 @@ class TriangleContact final : public b2Contact {
   FoundMasks masks_;
   ManifoldRecycling recycling_;
 };
-
-bool TrianglePair::fixed_masks(const TriangleContact& contact, ContactMemory& memory) {
-  const std::optional<InternalEdges> fixed = contact.fixed_internal_edges();
-  if (fixed) memory.internal_edges = *fixed;
-  return fixed.has_value();
-}
 
 // Makes every contact of the plug-in with `fixture` compute afresh at its next evaluation.
 void recompute_contacts_of(const b2Fixture& fixture);

@@ -1,4 +1,4 @@
-#include "triangle_contact.hpp"
+#include "contact.hpp"
 
 #include <box2d/b2_block_allocator.h>
 #include <box2d/b2_circle_shape.h>
@@ -41,7 +41,7 @@ const b2Body& shorter_contact_list(const b2Body& p, const b2Body& q) {
   return x ? q : p;
 }
 
-// Calls `visit(TriangleContact&)` for the plug-in's contacts between bodies `p` and `q` until it
+// Calls `visit(Contact&)` for the plug-in's contacts between bodies `p` and `q` until it
 // returns false, walking the shorter of the two bodies' contact lists (`shorter_contact_list`).
 template <class Visit>
 void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) {
@@ -49,7 +49,7 @@ void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) 
   const b2Body& other = &walked == &p ? q : p;
   for (const b2ContactEdge* e = walked.GetContactList(); e; e = e->next) {
     if (e->other != &other) continue;
-    if (TriangleContact* c = TriangleContact::ours(e->contact); c && !visit(*c)) return;
+    if (Contact* c = Contact::ours(e->contact); c && !visit(*c)) return;
   }
 }
 
@@ -59,7 +59,7 @@ void for_contacts_between(const b2Body& p, const b2Body& q, const Visit& visit) 
 // edge a contact's pair could push along is within the skins of it, well inside the broad phase's
 // fattened boxes, so it has a contact of its own with the other body.)
 void forget_internal_edges_between(const b2Body& p, const b2Body& q) {
-  for_contacts_between(p, q, [](TriangleContact& c) {
+  for_contacts_between(p, q, [](Contact& c) {
     c.forget_internal_edges();
     return true;
   });
@@ -75,7 +75,7 @@ void static_neighbourhood_changed(const b2Body& p, const b2Body& q) {
     if (body->GetType() == b2_staticBody) continue;
     for (const b2ContactEdge* e = body->GetContactList(); e; e = e->next) {
       if (e->other->GetType() != b2_staticBody) continue;
-      if (TriangleContact* c = TriangleContact::ours(e->contact)) c->forget_internal_edges();
+      if (Contact* c = Contact::ours(e->contact)) c->forget_internal_edges();
     }
   }
 }
@@ -102,7 +102,7 @@ void fixtures_changed_near(const b2Contact& c) {
     static_neighbourhood_changed(a, b);
     return;
   }
-  const TriangleContact* ours = TriangleContact::ours(const_cast<b2Contact*>(&c));
+  const Contact* ours = Contact::ours(const_cast<b2Contact*>(&c));
   if (ours && ours->static_stamp_stale(installation().setting.epoch)) {
     static_neighbourhood_changed(a, b);
   }
@@ -117,50 +117,50 @@ void fixtures_changed_near(const b2Contact& c) {
 static_assert(sizeof(ContactMemory) == 16 && sizeof(FoundMasks) == 8 &&
                   sizeof(ManifoldRecycling) == 24,
               "the sizes the contact's budget counts on");
-static_assert(sizeof(TriangleContact) > allocator_class_below &&
-                  sizeof(TriangleContact) <= allocator_class,
+static_assert(sizeof(Contact) > allocator_class_below && sizeof(Contact) <= allocator_class,
               "the plug-in's contact must fit Box2D's 256-byte allocator class");
 
-b2Contact* TriangleContact::create(b2Fixture* fixture_a, int32, b2Fixture* fixture_b, int32,
-                                   b2BlockAllocator* allocator) {
-  void* memory = allocator->Allocate(sizeof(TriangleContact));
-  b2Contact* contact = new (memory) TriangleContact(fixture_a, fixture_b);
+b2Contact* Contact::create(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int32 index_b,
+                           b2BlockAllocator* allocator) {
+  void* memory = allocator->Allocate(sizeof(Contact));
+  b2Contact* contact = new (memory) Contact(fixture_a, index_a, fixture_b, index_b);
   fixtures_changed_near(*contact);
   return contact;
 }
 
-void TriangleContact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
+void Contact::destroy(b2Contact* contact, b2BlockAllocator* allocator) {
   fixtures_changed_near(*contact);
   if (!ours(contact)) {
-    // Made by Box2D's own code before an install: its own function frees it. `installation()`
-    // saved those functions before our destroy could ever be registered.
-    const bool circle = contact->GetFixtureB()->GetType() == b2Shape::e_circle;
-    (circle ? installation().box2d_own_circle : installation().box2d_own)
-        .destroy(contact, allocator);
+    // Made by Box2D's own code (before an install, or for a pair the config leaves to Box2D): its
+    // own function frees it. `installation()` saved those functions before our destroy could ever
+    // be registered.
+    const int pair =
+        taken_pair_index(contact->GetFixtureA()->GetType(), contact->GetFixtureB()->GetType());
+    installation().box2d_own[static_cast<std::size_t>(pair)].destroy(contact, allocator);
     return;
   }
-  static_cast<TriangleContact*>(contact)->~TriangleContact();
-  allocator->Free(contact, sizeof(TriangleContact));
+  static_cast<Contact*>(contact)->~Contact();
+  allocator->Free(contact, sizeof(Contact));
 }
 
 void recompute_contacts_of(const b2Fixture& fixture) {
   for (const b2ContactEdge* e = fixture.GetBody()->GetContactList(); e; e = e->next) {
-    TriangleContact* c = TriangleContact::ours(e->contact);
+    Contact* c = Contact::ours(e->contact);
     if (c && (c->GetFixtureA() == &fixture || c->GetFixtureB() == &fixture)) c->recompute();
   }
 }
 
-TriangleContact* TriangleContact::ours(b2Contact* c) {
-  return typeid(*c) == typeid(TriangleContact) ? static_cast<TriangleContact*>(c) : nullptr;
+Contact* Contact::ours(b2Contact* c) {
+  return typeid(*c) == typeid(Contact) ? static_cast<Contact*>(c) : nullptr;
 }
 
-bool TriangleContact::static_stamp_stale(std::uint8_t epoch) const {
+bool Contact::static_stamp_stale(std::uint8_t epoch) const {
   const std::uint16_t found = masks_.stamp;
   return found != 0 && !masks_.fixed() && found != internal_edges_stamp(epoch) &&
          with_static_body();
 }
 
-void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
+void Contact::internal_edges_stamp_moved(std::uint16_t seen) const {
   // Its static neighbours may have moved, and the pair's other static contacts may not see it in
   // their own stamps.
   if (seen != 0 && seen != FoundMasks::fixed_stamp && with_static_body()) {
@@ -168,8 +168,8 @@ void TriangleContact::internal_edges_stamp_moved(std::uint16_t seen) const {
   }
 }
 
-InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uint16_t fixtures,
-                                                   std::uint8_t epoch) const {
+InternalEdges Contact::find_internal_edges(std::uint16_t stamp, std::uint16_t fixtures,
+                                           std::uint8_t epoch) const {
   // Sharing is safe within one pair of bodies: a contact of theirs with the same stamp found its
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
   // the two bodies made or destroyed between steps) clears them all.
@@ -177,7 +177,7 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
   std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
   std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
   if (!(a && b))
-    for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](TriangleContact& c) {
+    for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](Contact& c) {
       if (&c == this || family_of(c.memory_.shapes) != Family::Triangles ||
           c.masks_.stamp != stamp || !c.masks_.settled() || c.masks_.fixtures != fixtures) {
         return true;
@@ -195,15 +195,15 @@ InternalEdges TriangleContact::find_internal_edges(std::uint16_t stamp, std::uin
                              b ? *b : triangle_internal_edges(*m_fixtureB));
 }
 
-std::optional<InternalEdges> TriangleContact::half_from_body(const b2Fixture& fixture,
-                                                             std::uint8_t epoch) const {
+std::optional<InternalEdges> Contact::half_from_body(const b2Fixture& fixture,
+                                                     std::uint8_t epoch) const {
   const b2Body& body = *fixture.GetBody();
   // Alone on its body, its triangle has no internal edge: `triangle_internal_edges` says so at
   // once.
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
   if (alone || body.GetType() == b2_staticBody) return std::nullopt;
   for (const b2ContactEdge* e = body.GetContactList(); e; e = e->next) {
-    const TriangleContact* c = ours(e->contact);
+    const Contact* c = ours(e->contact);
     if (!c || c == this) continue;
     const bool as_a = c->m_fixtureA == &fixture;
     if (!as_a && c->m_fixtureB != &fixture) continue;
@@ -214,65 +214,142 @@ std::optional<InternalEdges> TriangleContact::half_from_body(const b2Fixture& fi
   return std::nullopt;
 }
 
-TriangleContact::TriangleContact(b2Fixture* fixture_a, b2Fixture* fixture_b)
-    : b2Contact(fixture_a, 0, fixture_b, 0) {
-  // The pair's family, once: the shapes of a fixture never change.
-  const auto& a = *static_cast<const b2PolygonShape*>(fixture_a->GetShape());
-  if (fixture_b->GetType() == b2Shape::e_circle) {
-    look_at_shapes(a, *static_cast<const b2CircleShape*>(fixture_b->GetShape()), memory_);
-  } else {
-    look_at_shapes(a, *static_cast<const b2PolygonShape*>(fixture_b->GetShape()), memory_);
-  }
-}
-
-template <>
-TrianglePair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
-  return {polygon_a(), xf_a, *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
-}
-template <>
-PolygonPair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
-  return {polygon_a(), xf_a, *static_cast<const b2PolygonShape*>(m_fixtureB->GetShape()), xf_b};
-}
-template <>
-PolygonCirclePair TriangleContact::pair_at(const b2Transform& xf_a, const b2Transform& xf_b) const {
-  return {polygon_a(), xf_a, *static_cast<const b2CircleShape*>(m_fixtureB->GetShape()), xf_b};
-}
-
-template <class Pair>
-[[gnu::noinline]] void TriangleContact::keep_or_go_on(TriangleContact& c, b2Manifold* manifold,
-                                                      const b2Transform& xf_a,
-                                                      const b2Transform& xf_b) {
-  const Setting& setting = installation().setting;
-  const Pair pair = c.pair_at<Pair>(xf_a, xf_b);
-  if (keep<Pair>(*manifold, setting, pose_of(pair, c.memory_), c.memory_, c.recycling_, &c,
-                 &c.masks_)) {
+Contact::Contact(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int32 index_b)
+    : b2Contact(fixture_a, index_a, fixture_b, index_b) {
+  // The pair's family, once: the shapes of a fixture never change; and a two-sided edge's side,
+  // where B is as the contact begins.
+  const b2Shape& b = *fixture_b->GetShape();
+  const auto* circle =
+      b.m_type == b2Shape::e_circle ? static_cast<const b2CircleShape*>(&b) : nullptr;
+  const auto* polygon = circle ? nullptr : static_cast<const b2PolygonShape*>(&b);
+  if (fixture_a->GetType() == b2Shape::e_polygon) {
+    const auto& a = *static_cast<const b2PolygonShape*>(fixture_a->GetShape());
+    if (circle) {
+      look_at_shapes(a, *circle, memory_);
+    } else {
+      look_at_shapes(a, *polygon, memory_);
+    }
     return;
   }
-  skip_or_answer<Pair>(c, manifold, xf_a, xf_b);
+  b2EdgeShape child;
+  const b2EdgeShape& edge = edge_a(child);
+  const b2Vec2 centroid_b = b2MulT(
+      fixture_a->GetBody()->GetTransform(),
+      b2Mul(fixture_b->GetBody()->GetTransform(), circle ? circle->m_p : polygon->m_centroid));
+  if (circle) {
+    look_at_shapes(edge, *circle, centroid_b, memory_);
+  } else {
+    look_at_shapes(edge, *polygon, centroid_b, memory_);
+  }
+}
+
+namespace {
+
+// Whether `fixture`'s masks need no finding, and which: its fixed edge data, or none for a
+// polygon alone on a non-static body (its own outline); nothing when they must be found.
+std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture) {
+  if (const std::optional<ShapeMasks> fixed = fixed_polygon_edges(fixture)) return fixed;
+  const b2Body& body = *fixture.GetBody();
+  const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
+  if (alone && body.GetType() != b2_staticBody) return ShapeMasks{};
+  return std::nullopt;
+}
+
+// The masks a polygon fixture's pairs read: its fixed edge data, else found now.
+ShapeMasks masks_of(const b2Fixture& fixture) {
+  if (const std::optional<ShapeMasks> fixed = fixed_polygon_edges(fixture)) return *fixed;
+  return polygon_internal_edges(fixture);
+}
+
+}  // namespace
+
+bool Contact::fixed_masks(ContactMemory& memory) const {
+  const Family family = family_of(memory.shapes);
+  if (family == Family::Triangles) {
+    const std::optional<InternalEdges> fixed = fixed_internal_edges();
+    if (fixed) memory.internal_edges = *fixed;
+    return fixed.has_value();
+  }
+  if (family == Family::Polygons || family == Family::PolygonAndCircle) {
+    const std::optional<ShapeMasks> a = fixed_polygon_edges(*m_fixtureA);
+    if (!a) return false;
+    const bool b_has_edges = family == Family::Polygons;
+    const std::optional<ShapeMasks> b =
+        b_has_edges ? fixed_polygon_edges(*m_fixtureB) : ShapeMasks{};
+    if (!b) return false;
+    memory.internal_edges = {a->edges, a->closed_vertices};
+    memory.masks_b = *b;
+    return true;
+  }
+  // An edge: a one-sided edge's masks are its ghost vertices' (read by the family), a two-sided
+  // edge's its fixed ends on B's side; B's its own.
+  std::optional<ShapeMasks> a = ShapeMasks{};
+  if (two_sided_edge(*m_fixtureA)) {
+    const std::optional<EdgeEnds> ends = fixed_edge_ends(*m_fixtureA);
+    if (!ends) return false;
+    a = side_masks(*ends, on_edge_back(memory.shapes));
+  }
+  const std::optional<ShapeMasks> b =
+      family == Family::EdgeAndPolygon ? masks_without_finding(*m_fixtureB) : ShapeMasks{};
+  if (!b) return false;
+  memory.internal_edges = {a->edges, a->closed_vertices};
+  memory.masks_b = *b;
+  return true;
+}
+
+void Contact::find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMemory& memory) const {
+  const Family family = family_of(memory.shapes);
+  if (family == Family::Triangles) {
+    memory.internal_edges = find_internal_edges(masks.stamp, masks.fixtures, epoch);
+    return;
+  }
+  ShapeMasks a;
+  if (family == Family::Polygons || family == Family::PolygonAndCircle) {
+    a = masks_of(*m_fixtureA);
+  } else if (two_sided_edge(*m_fixtureA)) {
+    const std::optional<EdgeEnds> fixed = fixed_edge_ends(*m_fixtureA);
+    a = side_masks(fixed ? *fixed : edge_ends(*m_fixtureA), on_edge_back(memory.shapes));
+  }
+  memory.internal_edges = {a.edges, a.closed_vertices};
+  const bool b_has_edges = family == Family::Polygons || family == Family::EdgeAndPolygon;
+  memory.masks_b = b_has_edges ? masks_of(*m_fixtureB) : ShapeMasks{};
 }
 
 template <class Pair>
-[[gnu::noinline]] void TriangleContact::skip_or_answer(TriangleContact& c, b2Manifold* manifold,
-                                                       const b2Transform& xf_a,
-                                                       const b2Transform& xf_b) {
-  detail::skip_or_answer(manifold, installation().setting, c.pair_at<Pair>(xf_a, xf_b), c.memory_,
-                         &c, &c.masks_, &c.recycling_);
+[[gnu::noinline]] void Contact::keep_or_go_on(Contact& c, b2Manifold* manifold,
+                                              const b2Transform& xf_a, const b2Transform& xf_b) {
+  const Setting& setting = installation().setting;
+  bool kept = false;
+  c.with_pair<Pair>(xf_a, xf_b, [&](const Pair& pair) {
+    kept = keep<Pair>(*manifold, setting, pose_of(pair, c.memory_), c.memory_, c.recycling_, &c,
+                      &c.masks_);
+  });
+  if (!kept) skip_or_answer<Pair>(c, manifold, xf_a, xf_b);
+}
+
+template <class Pair>
+[[gnu::noinline]] void Contact::skip_or_answer(Contact& c, b2Manifold* manifold,
+                                               const b2Transform& xf_a, const b2Transform& xf_b) {
+  c.with_pair<Pair>(xf_a, xf_b, [&](const Pair& pair) {
+    detail::skip_or_answer(manifold, installation().setting, pair, c.memory_, &c, &c.masks_,
+                           &c.recycling_);
+  });
 }
 
 // Each act's function for each pair family, indexed by `ContactMemory::Shapes` (decided when the
 // contact was made): one indirect call to the path of the pair's family, as Box2D v3's table of
 // manifold functions per shape pair.
-struct TriangleContact::Paths {
-  void (*keep_or_go_on)(TriangleContact&, b2Manifold*, const b2Transform&, const b2Transform&);
-  void (*skip_or_answer)(TriangleContact&, b2Manifold*, const b2Transform&, const b2Transform&);
+struct Contact::Paths {
+  void (*keep_or_go_on)(Contact&, b2Manifold*, const b2Transform&, const b2Transform&);
+  void (*skip_or_answer)(Contact&, b2Manifold*, const b2Transform&, const b2Transform&);
 };
 
 template <class Pair>
-constexpr TriangleContact::Paths TriangleContact::paths_of() {
-  return {&TriangleContact::keep_or_go_on<Pair>, &TriangleContact::skip_or_answer<Pair>};
+constexpr Contact::Paths Contact::paths_of() {
+  return {&Contact::keep_or_go_on<Pair>, &Contact::skip_or_answer<Pair>};
 }
 
-const TriangleContact::Paths TriangleContact::paths[] = {
+const Contact::Paths Contact::paths[] = {
     paths_of<TrianglePair>(),       // Unchecked: never, a contact looks at its shapes when made
     paths_of<TrianglePair>(),       // Triangles
     paths_of<TrianglePair>(),       // InvalidTriangles
@@ -281,8 +358,14 @@ const TriangleContact::Paths TriangleContact::paths[] = {
     paths_of<PolygonPair>(),        // InvalidPolygons
     paths_of<PolygonCirclePair>(),  // PolygonAndCircle
     paths_of<PolygonCirclePair>(),  // InvalidPolygonAndCircle
+    paths_of<EdgePolygonPair>(),    // EdgeAndPolygon
+    paths_of<EdgePolygonPair>(),    // EdgeBackAndPolygon
+    paths_of<EdgePolygonPair>(),    // InvalidEdgeAndPolygon
+    paths_of<EdgeCirclePair>(),     // EdgeAndCircle
+    paths_of<EdgeCirclePair>(),     // EdgeBackAndCircle
+    paths_of<EdgeCirclePair>(),     // InvalidEdgeAndCircle
 };
-static_assert(static_cast<int>(ContactMemory::Shapes::InvalidPolygonAndCircle) == 7,
+static_assert(static_cast<int>(ContactMemory::Shapes::InvalidEdgeAndCircle) == 13,
               "one path per value of ContactMemory::Shapes");
 
 namespace {
@@ -310,31 +393,34 @@ void fetch_next_bodies(const b2Contact& contact) {
 
 // One evaluation: keep, else skip or answer (evaluation.hpp), on the path of the pair's family;
 // the next contact's bodies fetched first, so that their loads overlap this evaluation.
-void TriangleContact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a,
-                               const b2Transform& xf_b) {
+void Contact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b) {
   fetch_next_bodies(*this);
   const Paths& path = paths[static_cast<int>(memory_.shapes)];
   if (recycling_.slack > 0) return path.keep_or_go_on(*this, manifold, xf_a, xf_b);
   path.skip_or_answer(*this, manifold, xf_a, xf_b);
 }
 
-void TriangleContact::fresh_manifold(b2Manifold* manifold) const {
+void Contact::fresh_manifold(b2Manifold* manifold) const {
   ContactMemory memory = memory_;  // its masks and warm start, not its state
   FoundMasks masks = masks_;
   Setting setting = installation().setting;
   setting.never_recompute = false;
   const b2Transform& xf_a = m_fixtureA->GetBody()->GetTransform();
   const b2Transform& xf_b = m_fixtureB->GetBody()->GetTransform();
+  const auto afresh = [&](const auto& pair) {
+    detail::skip_or_answer(manifold, setting, pair, memory, this, &masks);
+  };
   switch (family_of(memory.shapes)) {
     case Family::Triangles:
-      return detail::skip_or_answer(manifold, setting, pair_at<TrianglePair>(xf_a, xf_b), memory,
-                                    this, &masks);
+      return with_pair<TrianglePair>(xf_a, xf_b, afresh);
     case Family::Polygons:
-      return detail::skip_or_answer(manifold, setting, pair_at<PolygonPair>(xf_a, xf_b), memory,
-                                    this, &masks);
+      return with_pair<PolygonPair>(xf_a, xf_b, afresh);
     case Family::PolygonAndCircle:
-      return detail::skip_or_answer(manifold, setting, pair_at<PolygonCirclePair>(xf_a, xf_b),
-                                    memory, this, &masks);
+      return with_pair<PolygonCirclePair>(xf_a, xf_b, afresh);
+    case Family::EdgeAndPolygon:
+      return with_pair<EdgePolygonPair>(xf_a, xf_b, afresh);
+    case Family::EdgeAndCircle:
+      return with_pair<EdgeCirclePair>(xf_a, xf_b, afresh);
   }
 }
 
@@ -346,28 +432,37 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
   manifold->pointCount = 0;
   const b2Fixture* fa = contact.GetFixtureA();
   const b2Fixture* fb = contact.GetFixtureB();
-  const bool circle = fb->GetType() == b2Shape::e_circle;
-  if (fa->GetType() != b2Shape::e_polygon || (fb->GetType() != b2Shape::e_polygon && !circle)) {
-    return;
-  }
+  if (detail::taken_pair_index(fa->GetType(), fb->GetType()) < 0) return;
   auto* c = const_cast<b2Contact*>(&contact);
-  if (const detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
+  if (const detail::Contact* ours = detail::Contact::ours(c)) {
     ours->fresh_manifold(manifold);
     return;
   }
-  if (circle) {
-    b2CollidePolygonAndCircle(
-        manifold, static_cast<const b2PolygonShape*>(fa->GetShape()), fa->GetBody()->GetTransform(),
-        static_cast<const b2CircleShape*>(fb->GetShape()), fb->GetBody()->GetTransform());
-    return;
+  // Box2D's own contact: its `Evaluate`, on a copy (it changes nothing but the manifold).
+  const b2Transform& xf_a = fa->GetBody()->GetTransform();
+  const b2Transform& xf_b = fb->GetBody()->GetTransform();
+  const b2Shape* a = fa->GetShape();
+  const b2Shape* b = fb->GetShape();
+  const bool circle = b->m_type == b2Shape::e_circle;
+  const auto* polygon_b = static_cast<const b2PolygonShape*>(b);
+  const auto* circle_b = static_cast<const b2CircleShape*>(b);
+  if (a->m_type == b2Shape::e_polygon) {
+    const auto* polygon_a = static_cast<const b2PolygonShape*>(a);
+    if (circle) return b2CollidePolygonAndCircle(manifold, polygon_a, xf_a, circle_b, xf_b);
+    return b2CollidePolygons(manifold, polygon_a, xf_a, polygon_b, xf_b);
   }
-  b2CollidePolygons(
-      manifold, static_cast<const b2PolygonShape*>(fa->GetShape()), fa->GetBody()->GetTransform(),
-      static_cast<const b2PolygonShape*>(fb->GetShape()), fb->GetBody()->GetTransform());
+  b2EdgeShape child;
+  const b2EdgeShape* edge = static_cast<const b2EdgeShape*>(a);
+  if (a->m_type == b2Shape::e_chain) {
+    static_cast<const b2ChainShape*>(a)->GetChildEdge(&child, contact.GetChildIndexA());
+    edge = &child;
+  }
+  if (circle) return b2CollideEdgeAndCircle(manifold, edge, xf_a, circle_b, xf_b);
+  b2CollideEdgeAndPolygon(manifold, edge, xf_a, polygon_b, xf_b);
 }
 
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
-  const auto* ours = detail::TriangleContact::ours(const_cast<b2Contact*>(&contact));
+  const auto* ours = detail::Contact::ours(const_cast<b2Contact*>(&contact));
   if (!ours) return std::nullopt;
   const std::optional<InternalEdges> a = detail::fixed_edges(*contact.GetFixtureA());
   const std::optional<InternalEdges> b = detail::fixed_edges(*contact.GetFixtureB());
@@ -377,7 +472,7 @@ std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
 
 void forget_internal_edges(b2World& world) {
   for (b2Contact* c = world.GetContactList(); c; c = c->GetNext()) {
-    if (detail::TriangleContact* ours = detail::TriangleContact::ours(c)) {
+    if (detail::Contact* ours = detail::Contact::ours(c)) {
       ours->forget_internal_edges();
     }
   }
