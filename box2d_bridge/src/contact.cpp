@@ -174,8 +174,12 @@ InternalEdges Contact::find_internal_edges(std::uint16_t stamp, std::uint16_t fi
   // masks from the same fixtures, and what makes one of them stale otherwise (a contact between
   // the two bodies made or destroyed between steps) clears them all.
   // A fixture's fixed edge data first (`fix_internal_edges`): nothing to find.
-  std::optional<InternalEdges> a = fixed_edges(*m_fixtureA);
-  std::optional<InternalEdges> b = fixed_edges(*m_fixtureB);
+  const auto triangle_half = [](std::optional<ShapeMasks> m) -> std::optional<InternalEdges> {
+    if (!m) return std::nullopt;
+    return InternalEdges{m->edges, m->closed_vertices};
+  };
+  std::optional<InternalEdges> a = triangle_half(fixed_masks_facing(*m_fixtureA, *m_fixtureB));
+  std::optional<InternalEdges> b = triangle_half(fixed_masks_facing(*m_fixtureB, *m_fixtureA));
   if (!(a && b))
     for_contacts_between(*m_fixtureA->GetBody(), *m_fixtureB->GetBody(), [&](Contact& c) {
       if (&c == this || family_of(c.memory_.shapes) != Family::Triangles ||
@@ -191,8 +195,12 @@ InternalEdges Contact::find_internal_edges(std::uint16_t stamp, std::uint16_t fi
     });
   if (!a) a = half_from_body(*m_fixtureA, epoch);
   if (!b) b = half_from_body(*m_fixtureB, epoch);
-  return InternalEdges::pair(a ? *a : triangle_internal_edges(*m_fixtureA),
-                             b ? *b : triangle_internal_edges(*m_fixtureB));
+  const auto found = [](const b2Fixture& fixture, const b2Fixture& other) {
+    const ShapeMasks m = masks_facing(polygon_edge_data(fixture), fixture, other);
+    return InternalEdges{m.edges, m.closed_vertices};
+  };
+  return InternalEdges::pair(a ? *a : found(*m_fixtureA, *m_fixtureB),
+                             b ? *b : found(*m_fixtureB, *m_fixtureA));
 }
 
 std::optional<InternalEdges> Contact::half_from_body(const b2Fixture& fixture,
@@ -245,20 +253,22 @@ Contact::Contact(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixture_b, int3
 
 namespace {
 
-// Whether `fixture`'s masks need no finding, and which: its fixed edge data, or none for a
-// polygon alone on a non-static body (its own outline); nothing when they must be found.
-std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture) {
-  if (const std::optional<ShapeMasks> fixed = fixed_polygon_edges(fixture)) return fixed;
+// Whether polygon fixture `fixture`'s masks against `other` need no finding, and which: its fixed
+// edge data, or none for a polygon alone on a non-static body (its own outline); nothing when they
+// must be found.
+std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture, const b2Fixture& other) {
+  if (const std::optional<ShapeMasks> fixed = fixed_masks_facing(fixture, other)) return fixed;
   const b2Body& body = *fixture.GetBody();
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
   if (alone && body.GetType() != b2_staticBody) return ShapeMasks{};
   return std::nullopt;
 }
 
-// The masks a polygon fixture's pairs read: its fixed edge data, else found now.
-ShapeMasks masks_of(const b2Fixture& fixture) {
-  if (const std::optional<ShapeMasks> fixed = fixed_polygon_edges(fixture)) return *fixed;
-  return polygon_internal_edges(fixture);
+// The masks polygon fixture `fixture`'s pairs with `other` read: its fixed edge data, else found
+// now; against the body of `other` (`masks_facing`).
+ShapeMasks masks_of(const b2Fixture& fixture, const b2Fixture& other) {
+  if (const std::optional<ShapeMasks> fixed = fixed_masks_facing(fixture, other)) return *fixed;
+  return masks_facing(polygon_edge_data(fixture), fixture, other);
 }
 
 }  // namespace
@@ -271,11 +281,11 @@ bool Contact::fixed_masks(ContactMemory& memory) const {
     return fixed.has_value();
   }
   if (family == Family::Polygons || family == Family::PolygonAndCircle) {
-    const std::optional<ShapeMasks> a = fixed_polygon_edges(*m_fixtureA);
+    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB);
     if (!a) return false;
     const bool b_has_edges = family == Family::Polygons;
     const std::optional<ShapeMasks> b =
-        b_has_edges ? fixed_polygon_edges(*m_fixtureB) : ShapeMasks{};
+        b_has_edges ? fixed_masks_facing(*m_fixtureB, *m_fixtureA) : ShapeMasks{};
     if (!b) return false;
     memory.internal_edges = {a->edges, a->closed_vertices};
     memory.masks_b = *b;
@@ -289,8 +299,9 @@ bool Contact::fixed_masks(ContactMemory& memory) const {
     if (!ends) return false;
     a = side_masks(*ends, on_edge_back(memory.shapes));
   }
-  const std::optional<ShapeMasks> b =
-      family == Family::EdgeAndPolygon ? masks_without_finding(*m_fixtureB) : ShapeMasks{};
+  const std::optional<ShapeMasks> b = family == Family::EdgeAndPolygon
+                                          ? masks_without_finding(*m_fixtureB, *m_fixtureA)
+                                          : ShapeMasks{};
   if (!b) return false;
   memory.internal_edges = {a->edges, a->closed_vertices};
   memory.masks_b = *b;
@@ -305,14 +316,14 @@ void Contact::find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMem
   }
   ShapeMasks a;
   if (family == Family::Polygons || family == Family::PolygonAndCircle) {
-    a = masks_of(*m_fixtureA);
+    a = masks_of(*m_fixtureA, *m_fixtureB);
   } else if (two_sided_edge(*m_fixtureA)) {
     const std::optional<EdgeEnds> fixed = fixed_edge_ends(*m_fixtureA);
     a = side_masks(fixed ? *fixed : edge_ends(*m_fixtureA), on_edge_back(memory.shapes));
   }
   memory.internal_edges = {a.edges, a.closed_vertices};
   const bool b_has_edges = family == Family::Polygons || family == Family::EdgeAndPolygon;
-  memory.masks_b = b_has_edges ? masks_of(*m_fixtureB) : ShapeMasks{};
+  memory.masks_b = b_has_edges ? masks_of(*m_fixtureB, *m_fixtureA) : ShapeMasks{};
 }
 
 template <class Pair>

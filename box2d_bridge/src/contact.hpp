@@ -36,6 +36,30 @@ inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   return static_cast<std::uint32_t>(x >> 32);
 }
 
+// Where the body of `other` is for the masks of `fixture`: its centre of mass in `fixture`'s body
+// frame. The body's, not its fixture's: every contact between two bodies sees the same masks, as
+// the contacts that lend each other masks assume (`Contact::find_internal_edges`).
+inline b2Vec2 body_in_frame_of(const b2Fixture& other, const b2Fixture& fixture) {
+  return b2MulT(fixture.GetBody()->GetTransform(), other.GetBody()->GetWorldCenter());
+}
+
+// `data`'s masks of polygon fixture `fixture` as the rule applies them against the body of
+// `other`: with what its junction hides from that body (`masks_facing`).
+inline ShapeMasks masks_facing(const PolygonEdgeData& data, const b2Fixture& fixture,
+                               const b2Fixture& other) {
+  if (data.junction.vertex == Junction::none) return data.masks;
+  return masks_facing(data, fixture, body_in_frame_of(other, fixture));
+}
+
+// The fixed masks of polygon fixture `fixture` against the body of `other` (`masks_facing`), or
+// nothing: never fixed.
+inline std::optional<ShapeMasks> fixed_masks_facing(const b2Fixture& fixture,
+                                                    const b2Fixture& other) {
+  const std::optional<PolygonEdgeData> record = fixed_polygon_record(fixture);
+  if (!record) return std::nullopt;
+  return masks_facing(*record, fixture, other);
+}
+
 // Box2D's contact for a pair the plug-in takes, made while it is installed: `Evaluate` is the
 // plug-in's evaluation with whatever is installed at the time (Box2D's own answer once
 // uninstalled). Holds no heap memory (b2World's destructor frees contacts without running their
@@ -123,11 +147,11 @@ class Contact final : public b2Contact {
   // both have it: then nothing is found, stamped or followed for the pair. For a pair of
   // triangles (`ContactMemory::Shapes`).
   std::optional<InternalEdges> fixed_internal_edges() const {
-    const std::optional<InternalEdges> a = fixed_triangle_edges(*m_fixtureA);
+    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB);
     if (!a) return std::nullopt;
-    const std::optional<InternalEdges> b = fixed_triangle_edges(*m_fixtureB);
+    const std::optional<ShapeMasks> b = fixed_masks_facing(*m_fixtureB, *m_fixtureA);
     if (!b) return std::nullopt;
-    return InternalEdges::pair(*a, *b);
+    return InternalEdges::pair({a->edges, a->closed_vertices}, {b->edges, b->closed_vertices});
   }
 
   // Its pair's masks, for the pair's family (`memory.shapes`), into `memory` when nothing need be

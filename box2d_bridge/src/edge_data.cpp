@@ -9,6 +9,7 @@
 #include "dyop/box2d_internal_edges.hpp"
 #include "internal_edges.hpp"
 #include "contact.hpp"
+#include "pair_families.hpp"
 
 namespace dyop::box2d {
 namespace detail {
@@ -23,7 +24,7 @@ bool has_fixed_edge_data(const b2Fixture& f) {
 // Writes `f`'s fixed edge data as it is now: a polygon's masks, or a two-sided edge's ends.
 void write_found_edge_data(b2Fixture& f) {
   if (holds_edge_data(f)) {
-    write_fixed_edges(f, polygon_internal_edges(f));
+    write_fixed_edges(f, polygon_edge_data(f));
   } else {
     write_fixed_edge_ends(f, edge_ends(f));
   }
@@ -56,7 +57,7 @@ void fix_fixtures(b2World& world, const std::vector<b2Fixture*>& fixtures) {
   for (std::size_t i = 0; i < fixtures.size(); ++i) {
     b2Fixture& f = *fixtures[i];
     if (holds_edge_data(f)) {
-      write_fixed_edges(f, {});
+      write_fixed_edges(f, PolygonEdgeData{});
     } else {
       write_fixed_edge_ends(f, {});
     }
@@ -107,6 +108,29 @@ int refresh_internal_edges(b2World& world, const b2AABB& region) {
 
 std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture) {
   return detail::fixed_edges(fixture);
+}
+
+ShapeMasks edge_internal_edges(const b2Fixture& fixture, int child, bool back) {
+  const b2Shape* shape = fixture.GetShape();
+  if (shape->m_type == b2Shape::e_chain) {
+    const auto& chain = *static_cast<const b2ChainShape*>(shape);
+    if (child < 0 || child >= chain.GetChildCount()) return {};
+    b2EdgeShape edge;
+    chain.GetChildEdge(&edge, child);
+    return detail::one_sided_masks(edge);
+  }
+  if (shape->m_type != b2Shape::e_edge) return {};
+  const auto& edge = *static_cast<const b2EdgeShape*>(shape);
+  if (edge.m_oneSided) return detail::one_sided_masks(edge);
+  const std::optional<detail::EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
+  return detail::side_masks(fixed ? *fixed : detail::edge_ends(fixture), back);
+}
+
+std::optional<ShapeMasks> fixed_edge_internal_edges(const b2Fixture& fixture, bool back) {
+  if (!detail::two_sided_edge(fixture)) return std::nullopt;
+  const std::optional<detail::EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
+  if (!fixed) return std::nullopt;
+  return detail::side_masks(*fixed, back);
 }
 
 std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture) {

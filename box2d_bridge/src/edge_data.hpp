@@ -24,15 +24,20 @@
 
 namespace dyop::box2d::detail {
 
-// The record: a key naming the fixture it was written for, and the polygon's masks (bits
-// 0..count−1 each, Box2D's vertex order).
+// The record: a key naming the fixture it was written for, then the polygon's masks (bits
+// 0..count−1 each, Box2D's vertex order) and its junction.
 struct EdgeRecord {
   std::uint64_t key = 0;
   std::uint8_t edges = 0;
   std::uint8_t closed_vertices = 0;
-  std::uint8_t unused[6] = {};
+  std::uint8_t junction_vertex = Junction::none;
+  std::uint8_t junction_closed = 0;  // bit 0 `Junction::closed_in`, bit 1 `closed_out`
+  std::int16_t junction_first = 0;
+  std::int16_t junction_last = 0;
 };
 static_assert(sizeof(EdgeRecord) == 2 * sizeof(b2Vec2), "the record fills two vertex slots");
+// The record's second word, after the key: what `record_masks_slot` holds.
+constexpr std::size_t record_data_bytes = sizeof(EdgeRecord) - sizeof(std::uint64_t);
 static_assert(b2_maxPolygonVertices == 8, "a 7-gon leaves vertex slot 7 and normal slot 7 free");
 static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a vertex mixes into the key as one word");
 
@@ -76,17 +81,43 @@ inline void* record_masks_slot(b2PolygonShape& p) {
                                                : static_cast<void*>(&p.m_normals[p.m_count]);
 }
 
-// The fixed edge data of polygon fixture `fixture` (bits 0..count−1), or nothing: none written,
-// or a polygon with no slot for it. The caller knows the shape is a polygon.
-inline std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture) {
+// The fixed edge data of polygon fixture `fixture` (masks bits 0..count−1, and its junction), or
+// nothing: none written, or a polygon with no slot for it. The caller knows the shape is a polygon.
+inline std::optional<PolygonEdgeData> fixed_polygon_record(const b2Fixture& fixture) {
   auto& polygon = *static_cast<b2PolygonShape*>(const_cast<b2Shape*>(fixture.GetShape()));
   if (polygon.m_count > max_fixed_vertices) return std::nullopt;
-  std::uint64_t key;
-  std::memcpy(&key, record_key_slot(polygon), sizeof key);
-  if (key != edge_record_key(fixture)) return std::nullopt;
-  std::uint8_t masks[2];
-  std::memcpy(masks, record_masks_slot(polygon), sizeof masks);
-  return ShapeMasks{masks[0], masks[1]};
+  EdgeRecord r;
+  std::memcpy(&r.key, record_key_slot(polygon), sizeof r.key);
+  if (r.key != edge_record_key(fixture)) return std::nullopt;
+  std::memcpy(&r.edges, record_masks_slot(polygon), record_data_bytes);
+  Junction j;
+  j.vertex = r.junction_vertex;
+  j.closed_in = (r.junction_closed & 1u) != 0;
+  j.closed_out = (r.junction_closed & 2u) != 0;
+  j.first = r.junction_first;
+  j.last = r.junction_last;
+  return PolygonEdgeData{{r.edges, r.closed_vertices}, j};
+}
+
+// The masks of `fixture_record`'s polygon for a body whose centroid is at `other` (the polygon's
+// body frame): its fixed masks, and what its junction hides from that body (`junction_masks`).
+inline ShapeMasks masks_facing(const PolygonEdgeData& record, const b2Fixture& fixture,
+                               const b2Vec2& other) {
+  ShapeMasks m = record.masks;
+  if (record.junction.vertex == Junction::none) return m;
+  const ShapeMasks hidden = junction_masks(
+      record.junction, *static_cast<const b2PolygonShape*>(fixture.GetShape()), other);
+  m.edges |= hidden.edges;
+  m.closed_vertices |= hidden.closed_vertices;
+  return m;
+}
+
+// The fixed masks of polygon fixture `fixture` (bits 0..count−1), or nothing (see
+// `fixed_polygon_record`); without what a junction would hide.
+inline std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture) {
+  const std::optional<PolygonEdgeData> r = fixed_polygon_record(fixture);
+  if (!r) return std::nullopt;
+  return r->masks;
 }
 
 // The fixed edge data of triangle fixture `fixture` (bits 0..2), or nothing: none written. Every
@@ -114,13 +145,21 @@ inline bool holds_edge_data(const b2Fixture& fixture) {
          static_cast<const b2PolygonShape*>(fixture.GetShape())->m_count <= max_fixed_vertices;
 }
 
-// Writes `masks` as the fixed edge data of polygon fixture `fixture` (`holds_edge_data`).
-inline void write_fixed_edges(b2Fixture& fixture, ShapeMasks masks) {
+// Writes `data` as the fixed edge data of polygon fixture `fixture` (`holds_edge_data`).
+inline void write_fixed_edges(b2Fixture& fixture, const PolygonEdgeData& data) {
   auto& polygon = *static_cast<b2PolygonShape*>(fixture.GetShape());
-  const std::uint64_t key = edge_record_key(fixture);
-  const std::uint8_t bytes[2] = {masks.edges, masks.closed_vertices};
-  std::memcpy(record_key_slot(polygon), &key, sizeof key);
-  std::memcpy(record_masks_slot(polygon), bytes, sizeof bytes);
+  EdgeRecord r;
+  r.key = edge_record_key(fixture);
+  r.edges = data.masks.edges;
+  r.closed_vertices = data.masks.closed_vertices;
+  r.junction_vertex = data.junction.vertex;
+  r.junction_closed =
+      static_cast<std::uint8_t>(static_cast<unsigned>(data.junction.closed_in) |
+                                static_cast<unsigned>(data.junction.closed_out) << 1);
+  r.junction_first = data.junction.first;
+  r.junction_last = data.junction.last;
+  std::memcpy(record_key_slot(polygon), &r.key, sizeof r.key);
+  std::memcpy(record_masks_slot(polygon), &r.edges, record_data_bytes);
 }
 
 // A two-sided edge fixture's record: the key in `m_vertex0`, what its ends meet in `m_vertex3`.

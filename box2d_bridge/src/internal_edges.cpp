@@ -46,16 +46,30 @@ GroupPolygon group_polygon(const b2PolygonShape& p) {
   return t;
 }
 
+// An edge of the group (a `b2EdgeShape`, or a chain's child edge) in the frame of the fixture whose
+// masks are found.
+struct GroupSegment {
+  b2Vec2 a;
+  b2Vec2 b;
+};
+
 // The polygon fixtures (triangles or any other vertex count) that share edges with one fixture's
 // body (`share_edges`) near it: those whose broad-phase boxes overlap its own (or all of a small
-// non-static body's), in its body's frame; the fixture's own polygon first.
-class Group : public b2QueryCallback {
+// non-static body's), in its body's frame; the fixture's own polygon first. The edges and chains
+// of the group near it apart (`segments`), for its junctions.
+class Group {
  public:
   // `scratch` is emptied and filled: the calling thread's, reused so that finding masks
   // allocates nothing once it has grown to the largest neighbourhood seen.
-  Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupPolygon>& scratch)
-      : self_(self), body_(*self.GetBody()), own_(own), polygons_(scratch) {
+  Group(const b2Fixture& self, const b2PolygonShape& own, std::vector<GroupPolygon>& scratch,
+        std::vector<GroupSegment>& segment_scratch)
+      : self_(self),
+        body_(*self.GetBody()),
+        own_(own),
+        polygons_(scratch),
+        segments_(segment_scratch) {
     polygons_.clear();
+    segments_.clear();
     polygons_.push_back(group_polygon(own));
     const GroupPolygon& first = polygons_.front();
     for (int i = 0; i < first.count; ++i) own_scale_ = std::max(own_scale_, magnitude(first.v[i]));
@@ -67,23 +81,29 @@ class Group : public b2QueryCallback {
       const b2Fixture* f = body_.GetFixtureList();
       for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
       if (f == nullptr) {  // a small body: all of it
-        for (f = body_.GetFixtureList(); f; f = f->GetNext()) consider(*f);
+        for (f = body_.GetFixtureList(); f; f = f->GetNext()) {
+          for (int child = 0; child < f->GetShape()->GetChildCount(); ++child) consider(*f, child);
+        }
         return;
       }
     }
     // The polygon's own box, not its broad-phase proxy's: every polygon touching it overlaps
-    // it with its fattened box, and a disabled body's fixture has no proxy.
+    // it with its fattened box, and a disabled body's fixture has no proxy. The broad phase's own
+    // query: it tells a chain's child edges apart.
     b2AABB box;
     own_.ComputeAABB(&box, body_.GetTransform(), 0);
-    body_.GetWorld()->QueryAABB(this, box);
+    broad_phase().Query(this, box);
   }
 
-  bool ReportFixture(b2Fixture* f) override {
-    consider(*f);
-    return true;  // every overlap
+  // b2BroadPhase's query callback: every proxy whose box meets the polygon's.
+  bool QueryCallback(int32 proxy) {
+    const auto* fp = static_cast<const b2FixtureProxy*>(broad_phase().GetUserData(proxy));
+    consider(*fp->fixture, fp->childIndex);
+    return true;
   }
 
   const std::vector<GroupPolygon>& polygons() const { return polygons_; }
+  const std::vector<GroupSegment>& segments() const { return segments_; }
 
   // Two points of the group are one point, and a point lies on an edge's line, within this
   // distance (metres). Why: a vertex of another body is placed in the world by its body's
@@ -101,13 +121,20 @@ class Group : public b2QueryCallback {
   }
 
  private:
-  void consider(const b2Fixture& f) {
+  const b2BroadPhase& broad_phase() const {
+    return body_.GetWorld()->GetContactManager().m_broadPhase;
+  }
+
+  void consider(const b2Fixture& f, int child) {
     // A sensor is no part of the outline: nothing collides with it.
     if (&f == &self_ || f.IsSensor()) return;
     const b2Body& body = *f.GetBody();
     if (!share_edges(body_, body)) return;
     const b2PolygonShape* p = polygon_of(f);
-    if (!p) return;
+    if (!p) {
+      consider_edge(f, child);
+      return;
+    }
     GroupPolygon t = group_polygon(*p);
     const b2Transform& mine = body_.GetTransform();
     const b2Transform& theirs = body.GetTransform();
@@ -125,6 +152,41 @@ class Group : public b2QueryCallback {
       other_origins_ = std::max(other_origins_, magnitude(theirs.p));
     }
     polygons_.push_back(t);
+  }
+
+  // An edge or a chain's child edge of the group, kept when it ends at or passes through one of
+  // the own polygon's vertices (within the tolerance).
+  void consider_edge(const b2Fixture& f, int child) {
+    const b2Shape* shape = f.GetShape();
+    b2EdgeShape edge;
+    if (shape->m_type == b2Shape::e_chain) {
+      static_cast<const b2ChainShape*>(shape)->GetChildEdge(&edge, child);
+    } else if (shape->m_type == b2Shape::e_edge) {
+      edge = *static_cast<const b2EdgeShape*>(shape);
+    } else {
+      return;
+    }
+    const b2Body& body = *f.GetBody();
+    GroupSegment s{edge.m_vertex1, edge.m_vertex2};
+    float origins = 0;
+    if (&body != &body_) {
+      const b2Transform& mine = body_.GetTransform();
+      const b2Transform& theirs = body.GetTransform();
+      s = {b2MulT(mine, b2Mul(theirs, s.a)), b2MulT(mine, b2Mul(theirs, s.b))};
+      origins = magnitude(mine.p) + magnitude(theirs.p);
+    }
+    const float tol = tolerance_for(origins);
+    const GroupPolygon& own = polygons_.front();
+    for (int i = 0; i < own.count; ++i) {
+      const b2Vec2 d = s.b - s.a;
+      const float off = b2Cross(d, own.v[i] - s.a);
+      const float along = b2Dot(d, own.v[i] - s.a);
+      if (off * off <= tol * tol * d.LengthSquared() && along >= -tol * d.Length() &&
+          along <= d.LengthSquared() + tol * d.Length()) {
+        segments_.push_back(s);
+        return;
+      }
+    }
   }
 
   // The tolerance for points placed through frames whose origins sum to `origins` in magnitude.
@@ -161,6 +223,7 @@ class Group : public b2QueryCallback {
   const b2Body& body_;
   const b2PolygonShape& own_;
   std::vector<GroupPolygon>& polygons_;
+  std::vector<GroupSegment>& segments_;
   // The tolerance's scale (see `tolerance`): 16 FLT_EPSILON.
   static constexpr float coincidence_epsilons = 16;
   float own_scale_ = 0;      // the largest magnitude of the own polygon's coordinates
@@ -448,19 +511,126 @@ EdgeEnds edge_ends(const b2Fixture& fixture) {
   return out;
 }
 
+namespace {
+
+// The counter-clockwise angle from `from` to `to`, in [0, 2π).
+float ccw_angle(const b2Vec2& from, const b2Vec2& to) {
+  const float a = std::atan2(b2Cross(from, to), b2Dot(from, to));
+  return a < 0 ? a + 2 * b2_pi : a;
+}
+
+// The rays from `at` along `a`→`b` that end at `at` or pass through it, within `tol`, to `take`.
+template <class Take>
+void rays_at(const b2Vec2& at, const b2Vec2& a, const b2Vec2& b, float tol, const Take& take) {
+  const bool at_a = b2DistanceSquared(a, at) <= tol * tol;
+  const bool at_b = !at_a && b2DistanceSquared(b, at) <= tol * tol;
+  if (at_a || at_b) {
+    take(at_a ? b - a : a - b);
+    return;
+  }
+  const Line line(a, b);
+  const float t = line.along(at);
+  if (t > tol && t < line.length - tol && within(line, at, tol)) {
+    take(b - a);
+    take(a - b);
+  }
+}
+
+// The first vertex of `polygons.front()` where `segments` (edges of its group) meet it, as a
+// junction (`Junction`): every ray from the vertex along the group's edges and polygons' edges
+// that lies in the free space between its own edge in and its edge out, the first and the last
+// met turning counter-clockwise from its edge in; none where no edge's ray is among them.
+Junction junction_of(const std::vector<GroupPolygon>& polygons,
+                     const std::vector<GroupSegment>& segments, float tol) {
+  const GroupPolygon& own = polygons.front();
+  const float half_turn = b2_pi + std::asin(flat_outline_sine);
+  Junction j;
+  for (int i = 0; i < own.count && j.vertex == Junction::none; ++i) {
+    const b2Vec2& at = own.v[i];
+    const b2Vec2 in = own.v[i > 0 ? i - 1 : own.count - 1] - at;
+    const float out = ccw_angle(in, own.v[own.next(i)] - at);
+    float first = out;
+    float last = 0;
+    b2Vec2 first_ray(0, 0);
+    b2Vec2 last_ray(0, 0);
+    bool edge_ray = false;
+    const auto take = [&](const b2Vec2& ray, bool of_edge) {
+      const float a = ccw_angle(in, ray);
+      if (!(a > 0 && a < out)) return;  // along or within the polygon's own corner
+      edge_ray = edge_ray || of_edge;
+      if (a < first) first = a, first_ray = ray;
+      if (a > last) last = a, last_ray = ray;
+    };
+    for (const GroupSegment& s : segments) {
+      rays_at(at, s.a, s.b, tol, [&](const b2Vec2& ray) { take(ray, true); });
+    }
+    if (!edge_ray) continue;
+    for (std::size_t k = 1; k < polygons.size(); ++k) {
+      const GroupPolygon& t = polygons[k];
+      for (int e = 0; e < t.count; ++e) {
+        rays_at(at, t.v[e], t.v[t.next(e)], tol, [&](const b2Vec2& ray) { take(ray, false); });
+      }
+    }
+    j.vertex = static_cast<std::uint8_t>(i);
+    j.first = junction_angle(std::atan2(first_ray.y, first_ray.x));
+    j.last = junction_angle(std::atan2(last_ray.y, last_ray.x));
+    j.closed_in = first <= half_turn;
+    j.closed_out = out - last <= half_turn;
+  }
+  return j;
+}
+
+}  // namespace
+
+ShapeMasks junction_masks(const Junction& j, const b2PolygonShape& p, const b2Vec2& other) {
+  if (j.vertex == Junction::none || j.vertex >= p.m_count) return {};
+  const int i = j.vertex;
+  const int before = i > 0 ? i - 1 : p.m_count - 1;
+  const b2Vec2& at = p.m_vertices[i];
+  const b2Vec2 in = p.m_vertices[before] - at;
+  const float out = ccw_angle(in, p.m_vertices[i + 1 < p.m_count ? i + 1 : 0] - at);
+  const auto angle_of = [&](std::int16_t code) {
+    const float a = junction_angle(code);
+    return ccw_angle(in, b2Vec2(std::cos(a), std::sin(a)));
+  };
+  const float body = ccw_angle(in, other - at);
+  if (!(body > 0 && body < out)) return {};
+  const auto bit = [](int k) { return static_cast<std::uint8_t>(1u << k); };
+  ShapeMasks m;
+  if (body < angle_of(j.first)) {  // next to the edge in: the edge out is hidden
+    m.edges = bit(i);
+    if (j.closed_in) m.closed_vertices = bit(i);
+  } else if (body > angle_of(j.last)) {  // next to the edge out: the edge in is hidden
+    m.edges = bit(before);
+    if (j.closed_out) m.closed_vertices = bit(i);
+  } else {  // between other edges: both hidden
+    m.edges = static_cast<std::uint8_t>(bit(i) | bit(before));
+    m.closed_vertices = bit(i);
+  }
+  return m;
+}
+
 ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
+  return polygon_edge_data(fixture).masks;
+}
+
+PolygonEdgeData polygon_edge_data(const b2Fixture& fixture) {
+  PolygonEdgeData out;
   const b2PolygonShape* own = polygon_of(fixture);
-  if (!own) return {};
+  if (!own) return out;
   const b2Body& body = *fixture.GetBody();
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
-  if (alone && body.GetType() != b2_staticBody) return {};
+  if (alone && body.GetType() != b2_staticBody) return out;
 
   thread_local std::vector<GroupPolygon> scratch;
-  Group group(fixture, *own, scratch);
+  thread_local std::vector<GroupSegment> segment_scratch;
+  Group group(fixture, *own, scratch, segment_scratch);
   group.collect();
   const std::vector<GroupPolygon>& polygons = group.polygons();
-  if (polygons.size() == 1) return {};
   const float tol = group.tolerance();
+  if (!group.segments().empty()) out.junction = junction_of(polygons, group.segments(), tol);
+  if (polygons.size() == 1) return out;
+  ShapeMasks& masks = out.masks;
   const GroupPolygon& self = polygons.front();
   const int n = self.count;
   Line lines[b2_maxPolygonVertices] = {};
@@ -476,7 +646,6 @@ ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
   }
 
   thread_local std::vector<Interval> cover;
-  ShapeMasks masks;
   for (int i = 0; i < n; ++i) {
     opposite_cover_own(edges, lines[i], i, cover);
     if (covers_wholly(cover, lines[i].length, tol)) {
@@ -511,7 +680,7 @@ ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
     }
     masks.closed_vertices |= static_cast<std::uint8_t>(1u << i);
   }
-  return masks;
+  return out;
 }
 
 InternalEdges triangle_internal_edges(const b2Fixture& fixture) {

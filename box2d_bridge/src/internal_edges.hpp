@@ -9,6 +9,9 @@
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
 
+#include <box2d/b2_polygon_shape.h>
+
+#include <cmath>
 #include <cstdint>
 
 #include "dyop/convex_pair.hpp"
@@ -54,6 +57,45 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 // The same for a polygon fixture of any vertex count (bits 0..count−1, Box2D's order); its edge
 // group holds polygons of every vertex count. Empty for a circle, edge or chain.
 ShapeMasks polygon_internal_edges(const b2Fixture& fixture);
+
+// A vertex of a polygon where edges or chains of its group meet its outline (a two-sided edge
+// going on from a tile map's corner, a ramp onto it): the edges split the free space around the
+// vertex, and which of the polygon's two edges there bounds a body's part of it depends on where
+// the body is (`junction_masks`). The free space is what lies between the polygon's own edge into
+// the vertex and its edge out, turning counter-clockwise; the rays from the vertex along the
+// group's edges and polygons' edges within it split it. Directions are angles in the polygon's
+// body frame (`junction_angle`).
+struct Junction {
+  static constexpr std::uint8_t none = 0xFF;
+  std::uint8_t vertex = none;  // the vertex (Box2D's order); `none`: no junction
+  bool closed_in = false;      // the part next to its edge in spans at most a half-turn
+  bool closed_out = false;     // the part next to its edge out spans at most a half-turn
+  std::int16_t first = 0;      // the first ray met turning from its edge in
+  std::int16_t last = 0;       // the last ray met before its edge out
+};
+
+// `angle` (radians, [−π, π]) as a `Junction`'s direction, and back.
+inline std::int16_t junction_angle(float angle) {
+  return static_cast<std::int16_t>(std::lround(angle * (32767 / b2_pi)));
+}
+inline float junction_angle(std::int16_t code) { return code * (b2_pi / 32767); }
+
+// A polygon fixture's masks and its junction (the first vertex that has one).
+struct PolygonEdgeData {
+  ShapeMasks masks;
+  Junction junction;
+};
+
+// `polygon_internal_edges`, and the polygon's junction.
+PolygonEdgeData polygon_edge_data(const b2Fixture& fixture);
+
+// The masks a polygon `p` with junction `j` adds for a body whose centroid is at `other` (p's
+// body frame): in the free space next to the polygon's edge into the vertex, up to the first ray,
+// its edge out of the vertex is internal; next to its edge out, after the last, its edge in;
+// between the two, both. The vertex is closed where the body's part of the free space spans at
+// most a half-turn (flat within `flat_outline_sine`, or reflex; between two rays, always).
+// Nothing for a body within the polygon's own corner.
+ShapeMasks junction_masks(const Junction& j, const b2PolygonShape& p, const b2Vec2& other);
 
 // What a two-sided edge fixture's ends meet: the outline of the group (its body's edges, chains and
 // polygons, and for a static body every static body's) through each end, seen from either side.

@@ -28,7 +28,7 @@ constexpr float kVertexSpacing = 0.25f;  // m between the ground's vertices
 constexpr float kLevelGlideVertical = 0.01f;
 constexpr float kLevelGlideTravel = 0.99f;
 
-enum class LevelGround { Chain, Loop, TwoSidedEdges };
+enum class LevelGround { Chain, Loop, TwoSidedEdges, EdgeBodies };
 enum class LevelBody { TriangleBox, Box, Hexagon, Ball };
 
 const char* name(LevelGround g) {
@@ -39,6 +39,8 @@ const char* name(LevelGround g) {
       return "chain loop (CreateLoop)";
     case LevelGround::TwoSidedEdges:
       return "two-sided edges end to end";
+    case LevelGround::EdgeBodies:
+      return "two-sided edges end to end, a static body each";
   }
   return "";
 }
@@ -93,12 +95,16 @@ void add_level_ground(World& world, LevelGround kind, float x0, float length, bo
       return;
     }
     case LevelGround::TwoSidedEdges:
+    case LevelGround::EdgeBodies:
       std::sort(top.begin(), top.end(), [](const b2Vec2& p, const b2Vec2& q) { return p.x < q.x; });
       for (std::size_t i = 0; i + 1 < top.size(); ++i) {
+        // A body of its own at the edge's start, the edge in its frame.
+        b2Body* owner =
+            kind == LevelGround::EdgeBodies ? add_body(world, b2_staticBody, top[i]) : ground;
         b2EdgeShape edge;
-        edge.SetTwoSided(top[i], top[i + 1]);
+        edge.SetTwoSided(top[i] - owner->GetPosition(), top[i + 1] - owner->GetPosition());
         def.shape = &edge;
-        ground->CreateFixture(&def);
+        owner->CreateFixture(&def);
       }
       return;
   }
@@ -231,7 +237,8 @@ INSTANTIATE_TEST_SUITE_P(EveryBody, TwoSidedStripUnderside,
 
 std::vector<LevelCase> all_level_cases() {
   std::vector<LevelCase> out;
-  for (LevelGround g : {LevelGround::Chain, LevelGround::Loop, LevelGround::TwoSidedEdges}) {
+  for (LevelGround g : {LevelGround::Chain, LevelGround::Loop, LevelGround::TwoSidedEdges,
+                        LevelGround::EdgeBodies}) {
     for (LevelBody b :
          {LevelBody::TriangleBox, LevelBody::Box, LevelBody::Hexagon, LevelBody::Ball})
       out.push_back({g, b});
@@ -240,7 +247,7 @@ std::vector<LevelCase> all_level_cases() {
 }
 
 std::string level_case_name(const ::testing::TestParamInfo<LevelCase>& info) {
-  static const char* grounds[] = {"Chain", "Loop", "TwoSidedEdges"};
+  static const char* grounds[] = {"Chain", "Loop", "TwoSidedEdges", "EdgeBodies"};
   static const char* bodies[] = {"TriangleBox", "Box", "Hexagon", "Ball"};
   return std::string(grounds[static_cast<int>(info.param.ground)]) + "_" +
          bodies[static_cast<int>(info.param.body)];
@@ -305,6 +312,193 @@ TEST(ChainsAndEdgesLeftToBox2D, ConfigAndBackendKeepBox2DsOwnAnswersBitForBit) {
     EXPECT_EQ(e.travel, own_edges.travel) << name(backend);
     EXPECT_EQ(s.exact_pairs, 0u) << name(backend);
   }
+}
+
+// The masks of a strip of two-sided edges, and of a V: a middle edge has its other side internal
+// and both ends closed (the strip goes on flat); an end edge only its inner end; a lone edge
+// none; the V's joint is closed seen from above (a valley), open from below (a peak).
+TEST(TwoSidedEdgeData, MasksAreTheBodysSideAndTheEndsTheOutlineClosesThere) {
+  World world;
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  const auto edge = [&](b2Vec2 p, b2Vec2 q) {
+    b2EdgeShape e;
+    e.SetTwoSided(p, q);
+    return ground->CreateFixture(&e, 0);
+  };
+  std::vector<b2Fixture*> strip;
+  for (int i = 0; i < 4; ++i) strip.push_back(edge(b2Vec2(i, 0), b2Vec2(i + 1, 0)));
+  const b2Fixture* lone = edge(b2Vec2(10, 0), b2Vec2(11, 0));
+  const b2Fixture* down = edge(b2Vec2(20, 1), b2Vec2(21, 0));  // its front faces down-left
+  const b2Fixture* up = edge(b2Vec2(21, 0), b2Vec2(22, 1));
+  const ShapeMasks front_middle{0b10, 0b11};
+  const ShapeMasks back_middle{0b01, 0b11};
+  EXPECT_EQ(edge_internal_edges(*strip[1]), front_middle);
+  EXPECT_EQ(edge_internal_edges(*strip[1], 0, true), back_middle);
+  EXPECT_EQ(edge_internal_edges(*strip[0]), (ShapeMasks{0b10, 0b10}));
+  EXPECT_EQ(edge_internal_edges(*strip[3], 0, true), (ShapeMasks{0b01, 0b01}));
+  EXPECT_EQ(edge_internal_edges(*lone), ShapeMasks{});
+  EXPECT_EQ(edge_internal_edges(*lone, 0, true), ShapeMasks{});
+  EXPECT_EQ(edge_internal_edges(*down, 0, true), (ShapeMasks{0b01, 0b10}));  // above: a valley
+  EXPECT_EQ(edge_internal_edges(*down), (ShapeMasks{0b10, 0b00}));           // below: a peak
+  EXPECT_EQ(edge_internal_edges(*up, 0, true), (ShapeMasks{0b01, 0b01}));
+  EXPECT_EQ(edge_internal_edges(*up), (ShapeMasks{0b10, 0b00}));
+}
+
+// fix_internal_edges fixes every two-sided edge's ends as they are found, within a body and
+// across static bodies alike; a fixture never fixed has none.
+TEST(TwoSidedEdgeData, FixedEdgeDataIsWhatIsFoundAcrossStaticBodiesToo) {
+  for (const LevelGround kind : {LevelGround::TwoSidedEdges, LevelGround::EdgeBodies}) {
+    World world;
+    add_level_ground(world, kind, -2.0f, 3.0f);
+    std::vector<const b2Fixture*> edges;
+    std::vector<ShapeMasks> found;
+    for (b2Body* b = world->GetBodyList(); b; b = b->GetNext()) {
+      for (const b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext()) {
+        EXPECT_FALSE(fixed_edge_internal_edges(*f).has_value());
+        edges.push_back(f);
+        found.push_back(edge_internal_edges(*f, 0, true));
+      }
+    }
+    ASSERT_EQ(edges.size(), 12u) << name(kind);
+    fix_internal_edges(world.get());
+    int middle = 0;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const std::optional<ShapeMasks> fixed = fixed_edge_internal_edges(*edges[i], true);
+      ASSERT_TRUE(fixed.has_value()) << name(kind);
+      EXPECT_EQ(*fixed, found[i]) << name(kind) << ", edge " << i;
+      middle += found[i] == ShapeMasks{0b01, 0b11};
+    }
+    EXPECT_EQ(middle, 10) << name(kind);
+  }
+}
+
+// A two-sided edge continuing a triangulated ground's top flat: closed from above at the ground's
+// vertex, where the outline goes on along the ground's top; from below, the ground's face going
+// down bounds a quarter-turn of free space there: closed too.
+TEST(TwoSidedEdgeData, AnEdgeEndingOnATriangulatedGroundsVertexTakesItsOutline) {
+  World world;
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  const b2Vec2 v[] = {{0, 0}, {1, 0}, {1, -1}, {0, -1}};
+  const int indices[] = {0, 3, 1, 1, 3, 2};
+  ASSERT_TRUE(add_triangles(*ground, v, 4, indices, 6).ok());
+  b2Body* bridge = add_body(world, b2_staticBody, b2Vec2(1, 0));
+  b2EdgeShape e;
+  e.SetTwoSided(b2Vec2(0, 0), b2Vec2(1, 0));  // from the ground's corner (1, 0) to (2, 0)
+  const b2Fixture* strip = bridge->CreateFixture(&e, 0);
+  EXPECT_EQ(edge_internal_edges(*strip, 0, true), (ShapeMasks{0b01, 0b01}));
+  EXPECT_EQ(edge_internal_edges(*strip), (ShapeMasks{0b10, 0b01}));
+}
+
+// A triangulated tile ground whose top is y = 0 over [0, `length`], 0.5 m deep in 0.25 m cells
+// (`add_triangles`: its edge data fixed).
+b2Body* add_tile_ground(World& world, float length) {
+  b2Body* ground = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  constexpr float cell = 0.25f;
+  const int columns = static_cast<int>(std::lround(length / cell));
+  std::vector<b2Vec2> vertices;
+  std::vector<int> indices;
+  for (int row = 0; row <= 2; ++row) {
+    for (int i = 0; i <= columns; ++i) vertices.emplace_back(i * cell, -row * cell);
+  }
+  const auto at = [&](int row, int i) { return row * (columns + 1) + i; };
+  for (int row = 0; row < 2; ++row) {
+    for (int i = 0; i < columns; ++i) {
+      indices.insert(indices.end(), {at(row, i), at(row + 1, i), at(row, i + 1)});
+      indices.insert(indices.end(), {at(row, i + 1), at(row + 1, i), at(row + 1, i + 1)});
+    }
+  }
+  const MeshResult r = add_triangles(*ground, vertices.data(), static_cast<int>(vertices.size()),
+                                     indices.data(), static_cast<int>(indices.size()));
+  EXPECT_TRUE(r.ok()) << r.message;
+  return ground;
+}
+
+// Two-sided edges from `from` to `to` (a vertex every 0.25 m), on a static body of their own.
+void add_edge_strip(World& world, const b2Vec2& from, const b2Vec2& to) {
+  b2Body* strip = add_body(world, b2_staticBody, b2Vec2(0, 0));
+  const int n = static_cast<int>(std::lround((to - from).Length() / kVertexSpacing));
+  for (int i = 0; i < n; ++i) {
+    b2EdgeShape e;
+    e.SetTwoSided(from + (float(i) / n) * (to - from), from + (float(i + 1) / n) * (to - from));
+    strip->CreateFixture(&e, 0);
+  }
+}
+
+// A strip of two-sided edges going on flat from a tile map's corner: the tile's side below the
+// strip is hidden from bodies above it (the tile's junction), so every body glides across the
+// corner both ways, with the edge data fixed after the strip is added.
+TEST(EdgeOntoTiles, AStripGoingOnFlatFromATileMapsCornerGlidesBothWays) {
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  for (const float direction : {1.0f, -1.0f}) {
+    for (LevelBody kind :
+         {LevelBody::TriangleBox, LevelBody::Box, LevelBody::Hexagon, LevelBody::Ball}) {
+      float worst = 0;
+      float least_travel = 1;
+      for (const auto& [x0, height] : kLaunchOffsets) {
+        World world;
+        add_tile_ground(world, 8.0f);
+        add_edge_strip(world, b2Vec2(8, 0), b2Vec2(16, 0));
+        fix_internal_edges(world.get());
+        b2Body* glider = add_level_glider(world, kind);
+        const float start = (direction > 0 ? 5.0f : 11.0f) + x0;
+        glider->SetTransform(b2Vec2(start, height), 0);
+        glider->SetLinearVelocity(b2Vec2(direction * kLevelPushSpeed, 0));
+        const int steps = kStepsPerSecond;  // 4 m: across the corner
+        for (int step = 0; step < steps; ++step) {
+          world.step();
+          if (step >= kSettleSteps) {
+            worst = std::max(worst, std::abs(glider->GetLinearVelocity().y));
+          }
+        }
+        least_travel =
+            std::min(least_travel, direction * (glider->GetPosition().x - start) / kLevelPushSpeed);
+      }
+      EXPECT_LE(worst, kLevelGlideVertical) << name(kind) << ", direction " << direction;
+      EXPECT_GE(least_travel, kLevelGlideTravel) << name(kind) << ", direction " << direction;
+    }
+  }
+  ASSERT_TRUE(uninstall().ok());
+}
+
+// A ramp of two-sided edges up onto a tile map (rising 1 in 8 to its corner): a body sliding up
+// it keeps, over the tiles, the horizontal speed it had at the top (frictionless), from every
+// launch point: no ghost collision with the tile's side under the ramp's end, which would stop it.
+// The crest is convex: passing over it, a body resting in the skins is deflected up by the corner
+// (a ball loses up to 5 % of its horizontal speed there, as under Box2D's own contact).
+TEST(EdgeOntoTiles, ARampOntoATileMapIsClimbedWithoutAGhostCollision) {
+  constexpr float kRise = 0.5f;
+  constexpr float kRun = 4.0f;
+  const float slope = std::atan2(kRise, kRun);
+  const auto climb = [&](LevelBody kind, float offset) {
+    World world;
+    add_tile_ground(world, 8.0f);
+    add_edge_strip(world, b2Vec2(-kRun, -kRise), b2Vec2(0, 0));
+    fix_internal_edges(world.get());
+    b2Body* glider = add_level_glider(world, kind);
+    // On the ramp's foot, turned with it, sliding up it at 5 m/s.
+    const float along = 0.5f + offset;
+    const b2Vec2 foot(-kRun + along * std::cos(slope), -kRise + along * std::sin(slope));
+    glider->SetTransform(foot, slope);
+    glider->SetLinearVelocity(5.0f * b2Vec2(std::cos(slope), std::sin(slope)));
+    // The speed at the top, from the energy at the start (frictionless, no rotation).
+    const float top_speed = std::sqrt(25.0f - 2 * 10.0f * (0 - foot.y));
+    float least_vx = 100;
+    for (int step = 0; step < 2 * kStepsPerSecond; ++step) {
+      world.step();
+      if (glider->GetPosition().x > 1.0f)
+        least_vx = std::min(least_vx, glider->GetLinearVelocity().x);
+    }
+    return least_vx / (top_speed * std::cos(slope));
+  };
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  for (LevelBody kind :
+       {LevelBody::TriangleBox, LevelBody::Box, LevelBody::Hexagon, LevelBody::Ball}) {
+    for (const auto& launch : kLaunchOffsets) {
+      const float kept = climb(kind, launch[0]);
+      EXPECT_GE(kept, 0.9f) << name(kind) << " from " << launch[0];
+    }
+  }
+  ASSERT_TRUE(uninstall().ok());
 }
 
 }  // namespace

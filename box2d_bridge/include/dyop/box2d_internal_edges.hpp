@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// The internal-edge masks the plug-in finds for one triangle fixture of a world
-/// (`Config::internal_edges`), as its contacts find them: for drawing a level's outline, checking a
-/// tile map, and tests.
+/// The internal-edge masks the plug-in finds for one polygon or edge fixture of a world
+/// (`Config::internal_edges`), as its contacts find them, and the edge data fixed in them: for
+/// drawing a level's outline, checking a tile map, and tests.
 
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_world.h>
@@ -39,13 +39,14 @@ InternalEdges triangle_internal_edges(const b2Fixture& fixture);
 ShapeMasks polygon_internal_edges(const b2Fixture& fixture);
 
 /// Fixes the edge data of every polygon fixture of `body` (triangles and polygons up to 7
-/// vertices): its masks as `triangle_internal_edges` gives them now, kept in the fixture (no memory
-/// beyond it). Contacts then read them in O(1) and never look anything up; the fixed triangles of
-/// other bodies next to `body`'s get theirs again. Fixed edge data changes only through
-/// `fix_internal_edges`, `refresh_internal_edges` and `add_triangles` (`dyop/box2d_mesh.hpp`):
-/// after changing a fixed ground by hand (a fixture created or destroyed, a body moved, enabled,
-/// disabled or made static or not), refresh where it changed. Call between steps. A disabled body's
-/// triangles get empty masks until refreshed.
+/// vertices) and of every two-sided edge: its masks as `polygon_internal_edges` and
+/// `edge_internal_edges` give them now, kept in the fixture (no memory beyond it; a two-sided
+/// edge's in its ghost vertices, which Box2D leaves unread). Contacts then read them in O(1) and
+/// never look anything up; the fixed triangles of other bodies next to `body`'s get theirs again.
+/// Fixed edge data changes only through `fix_internal_edges`, `refresh_internal_edges` and
+/// `add_triangles` (`dyop/box2d_mesh.hpp`): after changing a fixed ground by hand (a fixture
+/// created or destroyed, a body moved, enabled, disabled or made static or not), refresh where it
+/// changed. Call between steps. A disabled body's triangles get empty masks until refreshed.
 void fix_internal_edges(b2Body& body);
 
 /// `fix_internal_edges` of every body of `world`.
@@ -70,6 +71,25 @@ std::optional<InternalEdges> fixed_internal_edges(const b2Fixture& fixture);
 /// nothing: not a polygon, never fixed, or an 8-gon (no slot of its shape is free to hold it: its
 /// contacts find its masks, as for a fixture never fixed).
 std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture);
+
+/// The masks the rule gives the pairs of edge fixture `fixture` (a `b2EdgeShape`, or child `child`
+/// of a `b2ChainShape`) with a body on its front (`back` false; the front is to the right of
+/// `m_vertex1` → `m_vertex2`) or on its back, in `Segment`'s bits (edge 0 the front, 1 the back,
+/// vertices 0 and 1 `m_vertex1` and `m_vertex2`):
+/// - one-sided (a chain's edge, `SetOneSided`): from its ghost vertices: its back internal, an end
+///   closed where the outline through it is flat (within 1e-3 rad) or concave seen from the front;
+///   `back` is ignored;
+/// - two-sided: from what its ends meet (its fixed edge data, else found now): the other edges,
+///   chains and polygons of its group (its body's, and for a static body every static body's)
+///   ending at or passing through each end; nothing when they meet nothing (both sides, as
+///   Box2D's), else its other side internal and each end closed where the free space on the
+///   body's side spans at most a half-turn (flat or reflex).
+/// Empty for any other shape.
+ShapeMasks edge_internal_edges(const b2Fixture& fixture, int child = 0, bool back = false);
+
+/// `edge_internal_edges` of two-sided edge fixture `fixture` from its fixed edge data, or nothing:
+/// not a two-sided edge, or never fixed.
+std::optional<ShapeMasks> fixed_edge_internal_edges(const b2Fixture& fixture, bool back = false);
 
 /// Makes every contact of `world` find its masks again when next needed: O(contacts), for a
 /// program that moved static bodies (`SetTransform`) and wants bodies that were farther than the
