@@ -185,7 +185,7 @@ inline std::optional<EdgeEnds> fixed_edge_ends(const b2Fixture& fixture) {
   std::memcpy(&key, &edge.m_vertex0, sizeof key);
   if (key != edge_ends_key(fixture)) return std::nullopt;
   EdgeEnds ends;
-  std::memcpy(&ends, &edge.m_vertex3, sizeof ends);
+  std::memcpy(static_cast<void*>(&ends), &edge.m_vertex3, sizeof ends);
   return ends;
 }
 
@@ -193,9 +193,9 @@ inline std::optional<EdgeEnds> fixed_edge_ends(const b2Fixture& fixture) {
 inline void write_fixed_edge_ends(b2Fixture& fixture, EdgeEnds ends) {
   auto& edge = *static_cast<b2EdgeShape*>(fixture.GetShape());
   const std::uint64_t key = edge_ends_key(fixture);
-  std::memcpy(&edge.m_vertex0, &key, sizeof key);
+  std::memcpy(static_cast<void*>(&edge.m_vertex0), &key, sizeof key);
   edge.m_vertex3.SetZero();
-  std::memcpy(&edge.m_vertex3, &ends, sizeof ends);
+  std::memcpy(static_cast<void*>(&edge.m_vertex3), &ends, sizeof ends);
 }
 
 // True when `fixture` holds, or can hold, fixed edge data: a polygon of up to

@@ -143,7 +143,7 @@ template <class Pair>
   typename Pair::Query q;
   q.level = Level::Manifold;
   q.margin = pose.margin;  // the skins: speculative, as Box2D's
-  q.face_hysteresis = face_hysteresis;
+  q.face_hysteresis = Pair::hysteresis(pose);
   q.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   q.witnesses = false;   // Box2D's solver reads the manifold alone
   bool put_off = false;
@@ -196,10 +196,10 @@ template <class Pair>
   Pair::count(count, setting, memory);
   if (Pair::solver_on(setting)) {
     if (pair.accepted(memory)) {
-      // Box2D's one-sided rule (`EdgePair::behind`): no contact while B stays behind.
-      if (const std::optional<float> behind = pair.behind(pose)) {
+      // Box2D's one-sided rules (`EdgePair::excluded`): no contact while B keeps out of reach.
+      if (const std::optional<float> gap = pair.excluded(pose)) {
         manifold->pointCount = 0;
-        if (recycling) remember(setting, pose, *manifold, *behind, contact, *recycling);
+        if (recycling) remember(setting, pose, *manifold, *gap, contact, *recycling);
         return;
       }
       const Result<float> r =

@@ -195,6 +195,22 @@ void EdgePair::write_faces(b2Manifold* manifold, const Manifold<float>& mf, cons
   }
 }
 
+std::optional<float> EdgeCirclePair::excluded(const PairPose& pose) const {
+  if (const std::optional<float> gap = behind(pose)) return gap;
+  if (!a.m_oneSided) return std::nullopt;
+  const b2Vec2& q = pose.centroid_b_in_a;
+  const b2Vec2 along = a.m_vertex2 - a.m_vertex1;
+  // Beyond the first end, in the face region of the edge before it; beyond the second, of the one
+  // after it (`b2CollideEdgeAndCircle`'s tests).
+  if (b2Dot(along, q - a.m_vertex1) <= 0 && b2Dot(a.m_vertex1 - a.m_vertex0, a.m_vertex1 - q) > 0) {
+    return 0.0f;
+  }
+  if (b2Dot(along, a.m_vertex2 - q) <= 0 && b2Dot(a.m_vertex3 - a.m_vertex2, q - a.m_vertex2) > 0) {
+    return 0.0f;
+  }
+  return std::nullopt;
+}
+
 float EdgePolygonPair::face_separation(int face, const PairPose& pose) const {
   if (face < 2) {
     const b2Vec2 n = side_normal(face);

@@ -181,13 +181,16 @@ constexpr Pinned kPinned[] = {
     {"concave", "via_plugin_box2d", 0x376ffe6557c4182full},
     {"crowd", "via_plugin_box2d", 0x911c6e8d2744e1d9ull},
     {"sliders", "via_plugin_box2d", 0xa2bf4c96b3d39b70ull},
-    // No triangle in it: every backend but `box2d` answers its pairs with the exact solver.
+    // No triangle in it: every backend but `box2d` answers its pairs with the exact solver. Moved
+    // when the polygon pairs' reference face became the least overlap's, A's only within
+    // rounding (Box2D's 0.1·linearSlop hysteresis left the depth the solver reads up to 0.5 mm too
+    // deep: polygon_manifold_test).
     {"everyday", "box2d_own", 0xe23dd46f35c42a68ull},
-    {"everyday", "via_plugin_dyop", 0x25cdfba7a95d158bull},
-    {"everyday", "via_plugin_dyop_fast", 0x25cdfba7a95d158bull},
-    {"everyday", "via_plugin_lin_canny", 0x25cdfba7a95d158bull},
-    {"everyday", "via_plugin_sat", 0x25cdfba7a95d158bull},
-    {"everyday", "via_plugin_epa", 0x25cdfba7a95d158bull},
+    {"everyday", "via_plugin_dyop", 0x0f124731a6f038f2ull},
+    {"everyday", "via_plugin_dyop_fast", 0x0f124731a6f038f2ull},
+    {"everyday", "via_plugin_lin_canny", 0x0f124731a6f038f2ull},
+    {"everyday", "via_plugin_sat", 0x0f124731a6f038f2ull},
+    {"everyday", "via_plugin_epa", 0x0f124731a6f038f2ull},
     {"everyday", "via_plugin_box2d", 0xe23dd46f35c42a68ull},
 };
 
