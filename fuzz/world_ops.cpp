@@ -84,11 +84,11 @@ float hi(std::uint8_t b) { return static_cast<float>(b >> 4) - 8.0f; }
 
 const char* kind_name(OpKind k) {
   constexpr const char* names[static_cast<int>(OpKind::Count)] = {
-      "new world",  "end world",   "create body",   "destroy body",    "add triangle",
-      "add mesh",   "add polygon", "add circle",    "destroy fixture", "teleport",
-      "set type",   "set enabled", "set velocity",  "apply impulse",   "install",
-      "uninstall",  "fix edges",   "refresh edges", "forget edges",    "step",
-      "world flags"};
+      "new world",   "end world",   "create body",   "destroy body",    "add triangle",
+      "add mesh",    "add polygon", "add circle",    "destroy fixture", "teleport",
+      "set type",    "set enabled", "set velocity",  "apply impulse",   "install",
+      "uninstall",   "fix edges",   "refresh edges", "forget edges",    "step",
+      "world flags", "add edge",    "add chain"};
   return names[static_cast<int>(k)];
 }
 
@@ -239,6 +239,8 @@ class Player {
   void add_mesh(b2Body& body, const WorldOp& op);
   void add_polygon(b2Body& body, const WorldOp& op);
   void add_circle(b2Body& body, const WorldOp& op);
+  void add_edge(b2Body& body, const WorldOp& op);
+  void add_chain(b2Body& body, const WorldOp& op);
   void body_op(b2Body& body, const WorldOp& op);
   void install(const WorldOp& op);
   void step(const WorldOp& op);
@@ -436,6 +438,62 @@ void Player::add_circle(b2Body& body, const WorldOp& op) {
   ++result_.played;
 }
 
+// arg[1]: bits 0-2 scale, bit 3 one-sided, bits 4-5 where its ghost vertices turn (straight on,
+// up, down, back); arg[2], arg[3]: its ends (nibbles, in scale units); arg[4]: the fixture's bits.
+void Player::add_edge(b2Body& body, const WorldOp& op) {
+  const float s = kScales[op.arg[1] & 7];
+  const bool one_sided = (op.arg[1] & 8) != 0;
+  const b2Vec2 v1 = s * b2Vec2(lo(op.arg[2]), hi(op.arg[2]));
+  const b2Vec2 v2 = s * b2Vec2(lo(op.arg[3]), hi(op.arg[3]));
+  const b2Vec2 d = v2 - v1;
+  const b2Vec2 turns[4] = {d, d + b2Vec2(-d.y, d.x), d + b2Vec2(d.y, -d.x), -0.5f * d};
+  const b2Vec2 ghost = turns[(op.arg[1] >> 4) & 3];
+  note("body %d of world %d: add %s edge (%.9g, %.9g) (%.9g, %.9g)", index_of(&body), where(&body),
+       one_sided ? "one-sided" : "two-sided", v1.x, v1.y, v2.x, v2.y);
+  if (!room_for_fixtures(1)) return;
+  b2EdgeShape shape;
+  if (one_sided) {
+    shape.SetOneSided(v1 - ghost, v1, v2, v2 + ghost);
+  } else {
+    shape.SetTwoSided(v1, v2);
+  }
+  add_fixture(body, shape, op.arg[4]);
+  ++result_.played;
+}
+
+// arg[1]: bits 0-2 scale, bit 3 a loop, bits 4-6 vertices (2-9; a loop 3-9); arg[2..5]: the
+// steps from one vertex to the next (nibbles, in scale units, the last repeated); arg[6]: the
+// fixture's bits.
+void Player::add_chain(b2Body& body, const WorldOp& op) {
+  const float s = kScales[op.arg[1] & 7];
+  const bool loop = (op.arg[1] & 8) != 0;
+  const int n = (loop ? 3 : 2) + ((op.arg[1] >> 4) & 7);
+  std::vector<b2Vec2> v(1, b2Vec2(0, 0));
+  for (int i = 1; i < n; ++i) {
+    const std::uint8_t step = op.arg[2 + std::min(i - 1, 3)];
+    v.push_back(v.back() + s * b2Vec2(lo(step), hi(step)));
+  }
+  note("body %d of world %d: add %s chain of %d vertices from (0, 0) to (%.9g, %.9g)",
+       index_of(&body), where(&body), loop ? "loop" : "open", n, v.back().x, v.back().y);
+  // b2ChainShape asserts on vertices closer than b2_linearSlop, the loop's closing one too.
+  for (int i = 0; i + 1 < n + (loop ? 1 : 0); ++i) {
+    if (b2DistanceSquared(v[static_cast<std::size_t>(i)],
+                          v[static_cast<std::size_t>((i + 1) % n)]) <=
+        b2_linearSlop * b2_linearSlop) {
+      return skip("chain vertices too close (Box2D asserts)");
+    }
+  }
+  if (!room_for_fixtures(1)) return;
+  b2ChainShape shape;
+  if (loop) {
+    shape.CreateLoop(v.data(), n);
+  } else {
+    shape.CreateChain(v.data(), n, v.front() - (v[1] - v[0]), v.back() + (v.back() - v[n - 2]));
+  }
+  add_fixture(body, shape, op.arg[6]);
+  ++result_.played;
+}
+
 void Player::body_op(b2Body& body, const WorldOp& op) {
   const int w = where(&body);
   const int i = index_of(&body);
@@ -455,6 +513,10 @@ void Player::body_op(b2Body& body, const WorldOp& op) {
       return add_polygon(body, op);
     case OpKind::AddCircle:
       return add_circle(body, op);
+    case OpKind::AddEdge:
+      return add_edge(body, op);
+    case OpKind::AddChain:
+      return add_chain(body, op);
     case OpKind::DestroyFixture: {
       const int n = fixture_count(body);
       note("body %d of world %d: destroy fixture %d of %d", i, w, n ? op.arg[1] % n : 0, n);
@@ -524,9 +586,13 @@ void Player::install(const WorldOp& op) {
   c.lin_canny_cache = (op.arg[1] & 4) == 0;
   c.internal_edges = (op.arg[1] & 8) == 0;
   c.recycle_distance = kRecycle[op.arg[2] & 3];
-  note("install %s (bounds %d, warm axis %d, lin-canny cache %d, internal edges %d, recycle %g)",
-       box2d::name(written), c.bounds_early_out, c.warm_axis, c.lin_canny_cache, c.internal_edges,
-       c.recycle_distance);
+  c.edges_and_chains = (op.arg[1] & 16) == 0;
+  c.triangles_only = (op.arg[1] & 32) != 0;
+  note(
+      "install %s (bounds %d, warm axis %d, lin-canny cache %d, internal edges %d, recycle %g, "
+      "edges and chains %d, triangles only %d)",
+      box2d::name(written), c.bounds_early_out, c.warm_axis, c.lin_canny_cache, c.internal_edges,
+      c.recycle_distance, c.edges_and_chains, c.triangles_only);
   ++result_.played;
   const Backend backend = installs_ == Installs::Box2D  ? Backend::Box2D
                           : installs_ == Installs::Dyop ? Backend::Dyop

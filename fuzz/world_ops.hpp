@@ -1,7 +1,8 @@
 #pragma once
 // The byte format of fuzz_world and its player: a byte string read as a sequence of operations on
 // one to three Box2D 2.4.1 worlds (bodies, triangle fixtures by hand and through `add_triangles`,
-// polygons, circles, moves, type changes, velocities, impulses, steps) with the plug-in installed,
+// polygons, circles, edges, chains, moves, type changes, velocities, impulses, steps) with the
+// plug-in installed,
 // reconfigured and uninstalled among them, played to a hash of every world's final state.
 //
 // Format: `op_bytes` bytes per operation, at most `max_ops` of them; missing bytes read as zero,
@@ -51,6 +52,8 @@ enum class OpKind : std::uint8_t {
   ForgetEdges,
   Step,
   WorldFlags,  // sleeping, warm starting, continuous physics, sub-stepping
+  AddEdge,     // a b2EdgeShape, two-sided or one-sided (ghost vertices)
+  AddChain,    // a b2ChainShape, open (ghost vertices) or a loop
   Count
 };
 

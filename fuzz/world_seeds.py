@@ -9,7 +9,7 @@ import os
 KINDS = ["NewWorld", "EndWorld", "CreateBody", "DestroyBody", "AddTriangle", "AddMesh",
          "AddPolygon", "AddCircle", "DestroyFixture", "Teleport", "SetType", "SetEnabled",
          "SetVelocity", "ApplyImpulse", "Install", "Uninstall", "FixEdges", "RefreshEdges",
-         "ForgetEdges", "Step", "WorldFlags"]
+         "ForgetEdges", "Step", "WorldFlags", "AddEdge", "AddChain"]
 STATIC, KINEMATIC, DYNAMIC, BULLET = range(4)
 DYOP, DYOP_FAST, LIN_CANNY, SAT, EPA, BOX2D = range(6)
 
@@ -122,7 +122,34 @@ def move_and_change():
     return s
 
 
-SEEDS = [pile, t_junction_slide, switch_backends, three_worlds, fast_and_far, move_and_change]
+def chains_and_edges():
+    s = op("Install", DYOP, 0, 0)
+    s += op("CreateBody", 0, STATIC, 0, 0, 0, 0)
+    # An open chain of 5 vertices 2 m apart, the front up (right to left), then a loop of 4.
+    s += op("AddChain", at(0, 0), 4 | (3 << 4), xy(-2, 0), xy(-2, 0), xy(-2, 1), xy(-2, 0), 0)
+    s += op("AddChain", at(0, 0), 3 | 8 | (1 << 4), xy(3, 0), xy(0, 3), xy(-3, 0), 0, 0)
+    s += op("CreateBody", 0, STATIC, 8, 0, 0, 0)  # two-sided edges end to end on another body
+    for k in range(3):
+        s += op("AddEdge", at(0, 1), 3, xy(k, 0), xy(k + 1, 0), 0)
+    s += op("AddEdge", at(0, 1), 3 | 8 | (1 << 4), xy(3, 0), xy(4, 1), 0)  # one-sided, a ghost up
+    s += op("CreateBody", 0, DYNAMIC, -2, 2, 0, 0)
+    s += op("AddTriangle", at(0, 2), 2, xy(-1, 0), xy(1, 0), xy(1, 1), xy(0, 0))
+    s += op("AddTriangle", at(0, 2), 2, xy(-1, 0), xy(1, 1), xy(-1, 1), xy(0, 0))
+    s += op("CreateBody", 0, DYNAMIC, 6, 2, 0, 0)
+    s += op("AddPolygon", at(0, 3), 2, 0, 0, xy(0, 1), 4)  # frictionless
+    s += op("AddCircle", at(0, 3), 2, xy(2, 1), 4)
+    s += op("SetVelocity", at(0, 3), 1, 32, 0, 0)
+    s += op("FixEdges", 0, 1) + step(repeats=4) * 2
+    s += op("Install", DYOP, 16, 0) + step(repeats=2)  # edges and chains left to Box2D
+    s += op("Install", SAT, 0, 1) + step(repeats=2)
+    s += op("CreateBody", 0, DYNAMIC, -4, -3, 0, 0)  # behind the chain, thrown up through it
+    s += op("AddCircle", at(0, 4), 1, xy(0, 0), 0)
+    s += op("SetVelocity", at(0, 4), 1, 0, 64, 0)
+    return s + step(repeats=4) * 3
+
+
+SEEDS = [pile, t_junction_slide, switch_backends, three_worlds, fast_and_far, move_and_change,
+         chains_and_edges]
 
 if __name__ == "__main__":
     folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus", "world")

@@ -257,11 +257,10 @@ namespace {
 // edge data, or none for a polygon alone on a non-static body (its own outline); nothing when they
 // must be found.
 std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture, const b2Fixture& other) {
-  if (const std::optional<ShapeMasks> fixed = fixed_masks_facing(fixture, other)) return fixed;
   const b2Body& body = *fixture.GetBody();
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
   if (alone && body.GetType() != b2_staticBody) return ShapeMasks{};
-  return std::nullopt;
+  return fixed_masks_facing(fixture, other);
 }
 
 // The masks polygon fixture `fixture`'s pairs with `other` read: its fixed edge data, else found
@@ -291,19 +290,18 @@ bool Contact::fixed_masks(ContactMemory& memory) const {
     memory.masks_b = *b;
     return true;
   }
-  // An edge: a one-sided edge's masks are its ghost vertices' (read by the family), a two-sided
-  // edge's its fixed ends on B's side; B's its own.
-  std::optional<ShapeMasks> a = ShapeMasks{};
-  if (two_sided_edge(*m_fixtureA)) {
-    const std::optional<EdgeEnds> ends = fixed_edge_ends(*m_fixtureA);
-    if (!ends) return false;
-    a = side_masks(*ends, on_edge_back(memory.shapes));
-  }
+  // An edge: a one-sided edge's masks are its ghost vertices' (in `memory` since the first look at
+  // the shapes), a two-sided edge's its fixed ends on B's side; B's its own.
   const std::optional<ShapeMasks> b = family == Family::EdgeAndPolygon
                                           ? masks_without_finding(*m_fixtureB, *m_fixtureA)
                                           : ShapeMasks{};
   if (!b) return false;
-  memory.internal_edges = {a->edges, a->closed_vertices};
+  if (two_sided_edge(*m_fixtureA)) {
+    const std::optional<EdgeEnds> ends = fixed_edge_ends(*m_fixtureA);
+    if (!ends) return false;
+    const ShapeMasks a = side_masks(*ends, on_edge_back(memory.shapes));
+    memory.internal_edges = {a.edges, a.closed_vertices};
+  }
   memory.masks_b = *b;
   return true;
 }
@@ -314,14 +312,15 @@ void Contact::find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMem
     memory.internal_edges = find_internal_edges(masks.stamp, masks.fixtures, epoch);
     return;
   }
-  ShapeMasks a;
   if (family == Family::Polygons || family == Family::PolygonAndCircle) {
-    a = masks_of(*m_fixtureA, *m_fixtureB);
+    const ShapeMasks a = masks_of(*m_fixtureA, *m_fixtureB);
+    memory.internal_edges = {a.edges, a.closed_vertices};
   } else if (two_sided_edge(*m_fixtureA)) {
     const std::optional<EdgeEnds> fixed = fixed_edge_ends(*m_fixtureA);
-    a = side_masks(fixed ? *fixed : edge_ends(*m_fixtureA), on_edge_back(memory.shapes));
-  }
-  memory.internal_edges = {a.edges, a.closed_vertices};
+    const ShapeMasks a =
+        side_masks(fixed ? *fixed : edge_ends(*m_fixtureA), on_edge_back(memory.shapes));
+    memory.internal_edges = {a.edges, a.closed_vertices};
+  }  // a one-sided edge's masks stay: its shape's
   const bool b_has_edges = family == Family::Polygons || family == Family::EdgeAndPolygon;
   memory.masks_b = b_has_edges ? masks_of(*m_fixtureB, *m_fixtureA) : ShapeMasks{};
 }
@@ -334,6 +333,13 @@ template <class Pair>
   c.with_pair<Pair>(xf_a, xf_b, [&](const Pair& pair) {
     kept = keep<Pair>(*manifold, setting, pose_of(pair, c.memory_), c.memory_, c.recycling_, &c,
                       &c.masks_);
+    // An edge pair goes on with the pair it has: a chain's child edge is made by a call into Box2D.
+    if constexpr (std::is_base_of_v<EdgePair, Pair>) {
+      if (!kept) {
+        detail::skip_or_answer(manifold, setting, pair, c.memory_, &c, &c.masks_, &c.recycling_);
+        kept = true;
+      }
+    }
   });
   if (!kept) skip_or_answer<Pair>(c, manifold, xf_a, xf_b);
 }

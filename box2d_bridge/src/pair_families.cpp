@@ -87,6 +87,9 @@ void look_at_edge(const b2EdgeShape& a, bool b_valid, const b2Vec2& centroid_b_i
   const b2Vec2 along = a.m_vertex2 - a.m_vertex1;
   const bool on_back = !a.m_oneSided && b2Cross(along, centroid_b_in_a - a.m_vertex1) > 0;
   memory.shapes = on_back ? back : front;
+  // A one-sided edge's masks are its shape's, once (`EdgePair::take_masks`).
+  const ShapeMasks m = a.m_oneSided ? one_sided_masks(a) : ShapeMasks{};
+  memory.internal_edges = {m.edges, m.closed_vertices};
 }
 
 }  // namespace

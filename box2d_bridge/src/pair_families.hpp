@@ -207,7 +207,8 @@ struct TrianglePair {
 
 // What the pairs beyond two triangles share: answered exactly (`dyop::collide`) under every
 // backend but `Box2D` and `Config::triangles_only`, with the masks of each shape (`ShapeMasks`:
-// A's in `ContactMemory::internal_edges`, B's in `masks_b`).
+// A's in `ContactMemory::internal_edges`, B's in `masks_b`; a one-sided edge's are its ghost
+// vertices', set by the first look at its shapes).
 struct ExactPair {
   using Query = ConvexQuery<float>;
   // The reference face is the least overlap's, A's within rounding (`face_tie_per_radius`): the
@@ -361,10 +362,12 @@ struct EdgePair : ExactPair {
   std::optional<float> behind(const PairPose& pose) const {
     if (!a.m_oneSided) return std::nullopt;
     b2Vec2 along = a.m_vertex2 - a.m_vertex1;
+    const b2Vec2 offset = pose.centroid_b_in_a - a.m_vertex1;
+    // The side first, unnormalised: the same sign; the distance only when behind.
+    if (!(b2Cross(offset, along) < 0.0f)) return std::nullopt;
     along.Normalize();
-    const float offset = b2Dot(b2Vec2(along.y, -along.x), pose.centroid_b_in_a - a.m_vertex1);
-    if (!(offset < 0.0f)) return std::nullopt;
-    return -offset;
+    const float distance = b2Dot(b2Vec2(along.y, -along.x), offset);
+    return distance < 0.0f ? -distance : 0.0f;
   }
   // The segment as the solver reads it (its front normal computed as Box2D's).
   EdgeInPlace segment(const PairPose& pose) const { return EdgeInPlace(a, pose.size_bound()); }
@@ -380,14 +383,6 @@ struct EdgePair : ExactPair {
   // `e_faceB`, that face's own normal and midpoint, the points on the edge in A's frame.
   void write_faces(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape* b,
                    const b2Transform& b_in_a) const;
-  // A's masks: a one-sided edge's from its ghost vertices, a two-sided edge's as its contact
-  // found them or its caller set them (`ContactMemory::internal_edges`); B's from `masks_b`.
-  void take_masks(Query& q, const ContactMemory& memory) const {
-    q.masks_a = a.m_oneSided ? one_sided_masks(a)
-                             : ShapeMasks{memory.internal_edges.edges,
-                                          memory.internal_edges.closed_vertices};
-    q.masks_b = memory.masks_b;
-  }
   static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
     to.edge_pairs.add();
     if (solver_on(setting) && accepted_shapes(memory)) to.exact_pairs.add();

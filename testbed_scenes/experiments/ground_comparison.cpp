@@ -170,6 +170,19 @@ class Built {
             ? tile_loops(cells_, kColumns, kRows, kCell, kGridOrigin)
             : chain_loops_of(level_ == GroundLevel::Flat ? flat_rings() : outline_rings());
     boundary = boundary_length(loops);
+    if (build_ == GroundBuild::Edges) {
+      for (const Ring& loop : loops) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+          b2EdgeShape edge;
+          edge.SetTwoSided(loop[i], loop[(i + 1) % loop.size()]);
+          fixtures_.push_back(ground_->CreateFixture(&edge, 0));
+        }
+      }
+      proxies = fixtures();
+      bytes = static_cast<double>(fixtures_.size() *
+                                  (sizeof(b2Fixture) + sizeof(b2EdgeShape) + kPerProxy));
+      return;
+    }
     if (build_ == GroundBuild::Chain) {
       for (const Ring& loop : loops) {
         b2ChainShape chain;
@@ -378,8 +391,8 @@ std::pair<double, double> crowd(Built& built, GroundLevel level, const GroundTim
   return {collide, step};
 }
 
-scenes::Runner runner_of(GroundBuild build) {
-  return build == GroundBuild::Chain ? scenes::Runner{} : scenes::Runner{box2d::Backend::Dyop};
+scenes::Runner runner_of(GroundWay way) {
+  return way.plugin ? scenes::Runner{box2d::Backend::Dyop} : scenes::Runner{};
 }
 
 }  // namespace
@@ -396,7 +409,21 @@ const char* name(GroundLevel level) {
   return "outline";
 }
 
-const char* name(GroundBuild build) { return build == GroundBuild::Chain ? "chain" : "builders"; }
+const char* name(GroundBuild build) {
+  switch (build) {
+    case GroundBuild::Chain:
+      return "chain";
+    case GroundBuild::Edges:
+      return "edges";
+    case GroundBuild::Builder:
+      break;
+  }
+  return "builders";
+}
+
+std::string name(GroundWay way) {
+  return std::string(name(way.build)) + (way.plugin ? ", plug-in" : ", Box2D's own");
+}
 
 bool builders_available(GroundLevel level) {
 #ifdef DYOP_WITH_OUTLINES
@@ -483,46 +510,48 @@ GroundTiming ground_timing(GroundLevel level, bool quick, std::optional<int> ste
   return t;
 }
 
-std::array<GroundRun, 2> compare_ground(GroundLevel level, const GroundTiming& timing,
-                                        const box2d::Config& config) {
+std::array<GroundRun, ground_way_count> compare_ground(GroundLevel level,
+                                                       const GroundTiming& timing,
+                                                       const box2d::Config& config) {
   if (!builders_available(level)) {
     throw std::runtime_error(std::string("grounds: no builder for level ") + name(level) +
                              " in this build (dyop::box2d_outlines needs GEOS)");
   }
   const Shapes shapes;
-  std::array<GroundRun, 2> out;
-  std::vector<double> builds[2], collide[2], step[2];
-  for (const GroundBuild build : ground_builds) {
-    GroundRun& r = out[static_cast<std::size_t>(build)];
-    const scenes::Installation installed(runner_of(build), config);
+  std::array<GroundRun, ground_way_count> out;
+  std::array<std::vector<double>, ground_way_count> builds, collide, step;
+  for (std::size_t w = 0; w < ground_ways.size(); ++w) {
+    const GroundWay way = ground_ways[w];
+    GroundRun& r = out[w];
+    const scenes::Installation installed(runner_of(way), config);
     r.level = level;
-    r.build = build;
-    Built gliding(level, build);
+    r.way = way;
+    Built gliding(level, way.build);
     r.boundary = gliding.boundary;
     r.fixtures = gliding.fixtures();
     r.proxies = gliding.proxies;
     r.bytes = gliding.bytes;
     r.glides = glides(gliding, shapes);
-    Built placing(level, build);
+    Built placing(level, way.build);
     r.placements = placements(placing, shapes);
     r.refresh_ms = placing.refresh();
-    builds[static_cast<int>(build)] = {gliding.build_ms, placing.build_ms};
+    builds[w] = {gliding.build_ms, placing.build_ms};
   }
   for (int run = 0; run < timing.runs; ++run) {
-    for (const GroundBuild build : ground_builds) {
-      const scenes::Installation installed(runner_of(build), config);
-      Built built(level, build);
-      builds[static_cast<int>(build)].push_back(built.build_ms);
+    for (std::size_t w = 0; w < ground_ways.size(); ++w) {
+      const scenes::Installation installed(runner_of(ground_ways[w]), config);
+      Built built(level, ground_ways[w].build);
+      builds[w].push_back(built.build_ms);
       const auto [c, s] = crowd(built, level, timing, shapes);
-      collide[static_cast<int>(build)].push_back(c);
-      step[static_cast<int>(build)].push_back(s);
+      collide[w].push_back(c);
+      step[w].push_back(s);
     }
   }
-  for (const GroundBuild build : ground_builds) {
-    GroundRun& r = out[static_cast<std::size_t>(build)];
-    r.build_ms = scenes::median(builds[static_cast<int>(build)]);
-    r.narrow_ms = scenes::median(collide[static_cast<int>(build)]);
-    r.step_ms = scenes::median(step[static_cast<int>(build)]);
+  for (std::size_t w = 0; w < ground_ways.size(); ++w) {
+    GroundRun& r = out[w];
+    r.build_ms = scenes::median(builds[w]);
+    r.narrow_ms = scenes::median(collide[w]);
+    r.step_ms = scenes::median(step[w]);
   }
   return out;
 }
@@ -546,7 +575,8 @@ LockstepRecording record_ground(GroundLevel level, const std::array<scenes::Runn
   }
   const Shapes shapes;
   return record_sides(ground_recording_name(level), runners, steps, configs, [&](int side) {
-    auto built = std::make_shared<Built>(level, ground_builds[static_cast<std::size_t>(side)]);
+    auto built =
+        std::make_shared<Built>(level, side == 0 ? GroundBuild::Chain : GroundBuild::Builder);
     add_gliders(built->world, shapes);
     add_placed_boxes(built->world, shapes, kDeepStart, 0);
     return SideWorld{built, &built->world, 1};

@@ -1,9 +1,11 @@
 #pragma once
 /// \file
-/// Levels built two ways, for `dyop compare`'s grounds section: as Box2D's own remedy for ghost
-/// collisions, one-sided `b2ChainShape` loops under Box2D's own contact (the plug-in not
-/// installed), and through the plug-in's builders (`dyop::box2d::TileGround`,
-/// `dyop::box2d::add_outline`) under the plug-in (`Backend::Dyop`); the same bodies on each.
+/// Levels built the ways a user builds them, for `dyop compare`'s grounds section: as Box2D's own
+/// remedy for ghost collisions, one-sided `b2ChainShape` loops, and as two-sided `b2EdgeShape`
+/// segments laid end to end along the same loops (the ground of most of Box2D's own testbed),
+/// each under Box2D's own contact (the plug-in not installed) and under the plug-in
+/// (`Backend::Dyop`); and through the plug-in's builders (`dyop::box2d::TileGround`,
+/// `dyop::box2d::add_outline`) under the plug-in. The same bodies on each.
 ///
 /// Units: metres, seconds, milliseconds for times; a level's figures per metre are per metre of
 /// its boundary (every loop's length).
@@ -30,11 +32,30 @@ inline constexpr std::array<GroundLevel, 3> ground_levels = {
     GroundLevel::Flat, GroundLevel::TileGrid, GroundLevel::Outline};
 const char* name(GroundLevel level);
 
-/// How a level is built: chain loops (Box2D's own contact) or the plug-in's builders.
-enum class GroundBuild : std::uint8_t { Chain, Builder };
-inline constexpr std::array<GroundBuild, 2> ground_builds = {GroundBuild::Chain,
-                                                             GroundBuild::Builder};
+/// How a level is built: chain loops, two-sided edges along the same loops, or the plug-in's
+/// builders.
+enum class GroundBuild : std::uint8_t { Chain, Edges, Builder };
 const char* name(GroundBuild build);
+
+/// A build and what answers its contacts: Box2D's own contact (`plugin` false) or the plug-in.
+struct GroundWay {
+  GroundBuild build = GroundBuild::Chain;
+  bool plugin = false;
+};
+
+/// The ways every level is run, in this order: the chain and the edges under Box2D's own contact
+/// and under the plug-in, then the builders under the plug-in. The first is the reference of
+/// every ratio.
+inline constexpr int ground_way_count = 5;
+inline constexpr std::array<GroundWay, ground_way_count> ground_ways = {
+    {{GroundBuild::Chain, false},
+     {GroundBuild::Chain, true},
+     {GroundBuild::Edges, false},
+     {GroundBuild::Edges, true},
+     {GroundBuild::Builder, true}}};
+
+/// "chain, Box2D's own", "chain, plug-in", ..., "builders, plug-in".
+std::string name(GroundWay way);
 
 /// True when this build can make `level` with the builders: outlines need `dyop::box2d_outlines`
 /// (GEOS); the tile grid always can.
@@ -66,7 +87,7 @@ struct GroundPlacement {
 /// One level built one way, and what the same bodies did on it.
 struct GroundRun {
   GroundLevel level = GroundLevel::Flat;
-  GroundBuild build = GroundBuild::Chain;
+  GroundWay way;
   double boundary = 0;  ///< metres of boundary (every loop), the same both ways
   int fixtures = 0;     ///< the ground's fixtures
   int proxies = 0;      ///< the ground's broad-phase proxies (a chain: one per edge)
@@ -91,13 +112,15 @@ struct GroundTiming {
 /// `steps`, when given, replaces the step count (`dyop compare --steps`).
 GroundTiming ground_timing(GroundLevel level, bool quick, std::optional<int> steps = std::nullopt);
 
-/// `level` built both ways (chain first): per way, one world for the glides (every body alone on
-/// the ground), one for the placements (then a refresh), one per crowd run; the crowd's runs
-/// alternate between the two. The plug-in is installed with `config` for the builders' side and
-/// uninstalled for the chain's, and uninstalled at the end. Throws `std::runtime_error` when the
-/// builders refuse the level or this build has none for it (`builders_available`).
-std::array<GroundRun, 2> compare_ground(GroundLevel level, const GroundTiming& timing,
-                                        const box2d::Config& config);
+/// `level` built every way (`ground_ways`, in that order): per way, one world for the glides
+/// (every body alone on the ground), one for the placements (then a refresh), one per crowd run;
+/// the crowd's runs alternate between the ways. The plug-in is installed with `config` for the
+/// ways under it and uninstalled for the others, and uninstalled at the end. Throws
+/// `std::runtime_error` when the builders refuse the level or this build has none for it
+/// (`builders_available`).
+std::array<GroundRun, ground_way_count> compare_ground(GroundLevel level,
+                                                       const GroundTiming& timing,
+                                                       const box2d::Config& config);
 
 /// Steps of a level's recording by default (`record_ground`): the glides' 4 s.
 inline constexpr int ground_recording_steps = 240;
@@ -108,10 +131,11 @@ std::string ground_recording_name(GroundLevel level);
 /// The level whose recording is called `name` (`ground_recording_name`); none for another name.
 std::optional<GroundLevel> ground_level_of_recording(const std::string& name);
 
-/// `level` built both ways with the glides' bodies pushed along its flat stretch and the boxes
-/// started 0.4 m inside it, in one world each way, recorded for `steps` (≥ 1) steps for a viewer
-/// page (`record_sides`): side A the chains under `runners[0]` with `configs[0]` (the comparison's:
-/// Box2D's own contact), side B the builders under `runners[1]` with `configs[1]` (the plug-in).
+/// `level` built as chains and by the builders, with the glides' bodies pushed along its flat
+/// stretch and the boxes started 0.4 m inside it, in one world each way, recorded for `steps`
+/// (≥ 1) steps for a viewer page (`record_sides`): side A the chains under `runners[0]` with
+/// `configs[0]` (the comparison's: Box2D's own contact), side B the builders under `runners[1]`
+/// with `configs[1]` (the plug-in).
 /// Named by `ground_recording_name`. Throws as `compare_ground` and `record_sides`.
 LockstepRecording record_ground(GroundLevel level, const std::array<scenes::Runner, 2>& runners,
                                 int steps, const std::array<box2d::Config, 2>& configs);

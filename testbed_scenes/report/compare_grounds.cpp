@@ -1,9 +1,9 @@
-// `dyop compare`'s grounds section: each level built as Box2D's chain loops (Box2D's own contact)
-// and through the plug-in's builders (the plug-in), side by side
-// (`experiments/ground_comparison.hpp`): the ground's size and build time, everyday bodies gliding,
-// boxes started inside or thrown at it, a crowd's narrow phase and step in wall time, and a
-// viewer page per level (`view_grounds-<level>.html`: the glides and the boxes started inside, the
-// chain's world beside the builders').
+// `dyop compare`'s grounds section: each level built as Box2D's chain loops and as two-sided
+// edges, each under Box2D's own contact and under the plug-in, and through the plug-in's builders,
+// side by side (`experiments/ground_comparison.hpp`): the ground's size and build time, everyday
+// bodies gliding, boxes started inside or thrown at it, a crowd's narrow phase and step in wall
+// time, and a viewer page per level (`view_grounds-<level>.html`: the glides and the boxes started
+// inside, the chain's world under Box2D's own contact beside the builders').
 #include <array>
 #include <sstream>
 #include <stdexcept>
@@ -19,9 +19,13 @@
 namespace dyop::report {
 namespace {
 
-using experiments::GroundBuild;
 using experiments::GroundLevel;
 using experiments::GroundRun;
+
+// Indices of `experiments::ground_ways`.
+constexpr std::size_t kChainOwn = 0, kChainPlugin = 1, kEdgesOwn = 2, kEdgesPlugin = 3,
+                      kBuilders = 4;
+static_assert(experiments::ground_way_count == 5, "the ways the tables name");
 
 // The placement trial the summary quotes: the one a one-sided chain cannot push out of.
 constexpr const char* kSummaryTrial = "started 0.4 m inside (centre under the top)";
@@ -60,8 +64,9 @@ class GroundsSection : public CompareSection {
                         page);
       parts_.push_back(
           {level, experiments::compare_ground(level, t, c.options.skips), t, page.str()});
-      c.progress << "[grounds] " << experiments::name(level) << ", chain and builders, crowd of "
-                 << t.bodies << " for " << t.steps << " steps × " << t.runs
+      c.progress << "[grounds] " << experiments::name(level)
+                 << ", chain and edges each way, builders, crowd of " << t.bodies << " for "
+                 << t.steps << " steps × " << t.runs
                  << " alternating runs: " << fixed(c.elapsed() - start, 2) << " s (total "
                  << fixed(c.elapsed(), 1) << " s)\n"
                  << std::flush;
@@ -71,8 +76,8 @@ class GroundsSection : public CompareSection {
   bool measured() const override { return !parts_.empty(); }
 
   void write_tables(std::ostream& out) const override {
-    out << "\nGrounds built as Box2D's chains (Box2D's own contact) and by the plug-in's builders "
-           "(the plug-in), the same bodies on each:\n\n";
+    out << "\nGrounds built as Box2D's chains and two-sided edges (each under Box2D's own contact "
+           "and the plug-in) and by the plug-in's builders, the same bodies on each:\n\n";
     tables(out);
     out << "\nViewer pages (the level as chains under Box2D's own contact, A, beside the "
            "builders' under the plug-in, B; open in a browser):\n";
@@ -92,16 +97,18 @@ class GroundsSection : public CompareSection {
   }
 
   void write_markdown(std::ostream& o, const Charts&) const override {
-    o << "## Against Box2D's chains: grounds from outlines and tile grids\n\n"
+    o << "## Grounds as users build them: chains, edges, the builders\n\n"
       << "Box2D's own remedy for ghost collisions is the chain: one-sided loops (since 2.4.0) "
-         "with ghost vertices, hollow. Each level is built both ways from what a user has: as "
-         "`b2ChainShape` loops (the outline's rings; a tile grid's solid cells traced into "
-         "loops, straight runs merged) under Box2D's own contact, the plug-in not installed; and "
-         "by the plug-in's builders (`dyop::box2d::add_outline` with its defaults, "
-         "`dyop::box2d::TileGround` with chunks of 16 × 16 cells) under the plug-in "
-         "(`dyop`). Levels: a flat 60 m outline with a vertex every 0.25 m; a 256 × 64 tile "
-         "grid of 0.5 m cells with hills and eight caves; a 300 m outline with hills, ten caves "
-         "and an overhang. Each has a flat stretch on top where bodies glide and are placed.\n\n"
+         "with ghost vertices, hollow; most of its testbed stands on two-sided edges laid end to "
+         "end. Each level is built from what a user has five ways: as `b2ChainShape` loops (the "
+         "outline's rings; a tile grid's solid cells traced into loops, straight runs merged) and "
+         "as two-sided `b2EdgeShape` segments along the same loops, each under Box2D's own contact "
+         "(the plug-in not installed) and under the plug-in (`dyop`, installed by its two lines: "
+         "no edge data fixed); and by the plug-in's builders (`dyop::box2d::add_outline` with its "
+         "defaults, `dyop::box2d::TileGround` with chunks of 16 × 16 cells) under the plug-in. "
+         "Levels: a flat 60 m outline with a vertex every 0.25 m; a 256 × 64 tile grid of 0.5 m "
+         "cells with hills and eight caves; a 300 m outline with hills, ten caves and an "
+         "overhang. Each has a flat stretch on top where bodies glide and are placed.\n\n"
       << "- **per metre**: per metre of the level's boundary (every loop); **bytes**: fixtures, "
          "shapes, chain vertices, broad-phase proxies and tree nodes (the plug-in's edge data "
          "lives in the shapes' spare vertex slots).\n"
@@ -112,7 +119,8 @@ class GroundsSection : public CompareSection {
       << "- **crowd**: boxes, hexagons, balls and boxes of two triangles (friction 0.6) dropped "
          "along the level (sleeping off, as every world of this report); narrow phase "
          "(`b2Profile::collide`) and step summed over the steps, "
-         "median of runs alternating between the two grounds in one process.\n"
+         "median of runs alternating between the five ways in one process; × own: over the same "
+         "ground under Box2D's own contact (the builders': over the chain's).\n"
       << "- **glides**: each body pushed at 4 m/s for 4 s, frictionless: largest vertical speed "
          "after the first step and distance over 16 m (a glide: 0 m/s, 100 %).\n"
       << "- **placements**: 10 boxes (`SetAsBox` 0.25 × 0.3 m, friction 0.6) started inside the "
@@ -120,7 +128,8 @@ class GroundsSection : public CompareSection {
          "top.\n\n";
     tables(o);
     o << "\nStep by step in a browser (`dyop view grounds-<level>`: the glides' bodies and the "
-         "boxes started 0.4 m inside, 4 s, the chain's world as A beside the builders' as B):";
+         "boxes started 0.4 m inside, 4 s, the chain's world under Box2D's own contact as A beside "
+         "the builders' as B):";
     for (const Part& p : parts_) {
       o << " [" << experiments::name(p.level) << "](" << page_file(p.level) << ")";
     }
@@ -134,31 +143,36 @@ class GroundsSection : public CompareSection {
 
   void summarize(SummaryFigures& figures) const override {
     for (const Part& p : parts_) {
-      const GroundRun& chain = p.runs[0];
-      const GroundRun& builders = p.runs[1];
+      const auto& r = p.runs;
       GroundFigures g;
       g.level = level_label(p.level);
-      for (std::size_t k = 0; k < chain.glides.size(); ++k) {
+      for (std::size_t k = 0; k < r[kChainOwn].glides.size(); ++k) {
         g.chain_vertical_speed =
-            std::max(g.chain_vertical_speed, chain.glides[k].max_vertical_speed);
+            std::max(g.chain_vertical_speed, r[kChainOwn].glides[k].max_vertical_speed);
+        g.chain_plugin_vertical_speed =
+            std::max(g.chain_plugin_vertical_speed, r[kChainPlugin].glides[k].max_vertical_speed);
         g.builders_vertical_speed =
-            std::max(g.builders_vertical_speed, builders.glides[k].max_vertical_speed);
+            std::max(g.builders_vertical_speed, r[kBuilders].glides[k].max_vertical_speed);
       }
-      for (std::size_t k = 0; k < chain.placements.size(); ++k) {
-        if (chain.placements[k].trial != kSummaryTrial) continue;
-        g.boxes = chain.placements[k].boxes;
-        g.chain_on_top = chain.placements[k].on_top;
-        g.builders_on_top = builders.placements[k].on_top;
+      for (std::size_t k = 0; k < r[kChainOwn].placements.size(); ++k) {
+        if (r[kChainOwn].placements[k].trial != kSummaryTrial) continue;
+        g.boxes = r[kChainOwn].placements[k].boxes;
+        g.chain_on_top = r[kChainOwn].placements[k].on_top;
+        g.builders_on_top = r[kBuilders].placements[k].on_top;
       }
-      g.narrowphase_ratio = builders.narrow_ms / chain.narrow_ms;
-      g.step_ratio = builders.step_ms / chain.step_ms;
+      g.chain_narrowphase_ratio = r[kChainPlugin].narrow_ms / r[kChainOwn].narrow_ms;
+      g.chain_step_ratio = r[kChainPlugin].step_ms / r[kChainOwn].step_ms;
+      g.edges_narrowphase_ratio = r[kEdgesPlugin].narrow_ms / r[kEdgesOwn].narrow_ms;
+      g.edges_step_ratio = r[kEdgesPlugin].step_ms / r[kEdgesOwn].step_ms;
+      g.narrowphase_ratio = r[kBuilders].narrow_ms / r[kChainOwn].narrow_ms;
+      g.step_ratio = r[kBuilders].step_ms / r[kChainOwn].step_ms;
       figures.grounds.push_back(g);
     }
     figures.viewer_pages = figures.viewer_pages || !parts_.empty();
   }
 
   std::string files() const override {
-    return "`grounds.csv` (each level's ground both ways: size, build, crowd), "
+    return "`grounds.csv` (each level's ground every way: size, build, crowd), "
            "`grounds_glides.csv`, `grounds_placements.csv`, `view_grounds-<level>.html` (viewer "
            "pages: chains against builders)";
   }
@@ -173,7 +187,7 @@ class GroundsSection : public CompareSection {
  private:
   struct Part {
     GroundLevel level;
-    std::array<GroundRun, 2> runs;  // chain, builders
+    std::array<GroundRun, experiments::ground_way_count> runs;  // `experiments::ground_ways`
     experiments::GroundTiming timing;
     std::string page;  // the level's viewer page (`record_ground`)
   };
@@ -185,8 +199,16 @@ class GroundsSection : public CompareSection {
   void tables(std::ostream& out) const {
     Records grounds = ground_records(true);
     grounds.write_markdown(out);
-    out << "\n| level | body | chain: vertical speed, travel | builders: vertical speed, travel "
-           "|\n|---|---|---|---|\n";
+    const auto header = [&](const char* first, const char* what) {
+      out << "\n| level | " << first << " |";
+      for (const experiments::GroundWay& w : experiments::ground_ways) {
+        out << ' ' << experiments::name(w) << ": " << what << " |";
+      }
+      out << "\n|---|---|";
+      for (std::size_t k = 0; k < experiments::ground_ways.size(); ++k) out << "--:|";
+      out << '\n';
+    };
+    header("body", "vertical speed, travel");
     for (const Part& p : parts_) {
       for (std::size_t k = 0; k < p.runs[0].glides.size(); ++k) {
         out << "| " << experiments::name(p.level) << " | " << p.runs[0].glides[k].body << " |";
@@ -197,7 +219,7 @@ class GroundsSection : public CompareSection {
         out << '\n';
       }
     }
-    out << "\n| level | boxes | chain: on top | builders: on top |\n|---|---|--:|--:|\n";
+    header("boxes", "on top");
     for (const Part& p : parts_) {
       for (std::size_t k = 0; k < p.runs[0].placements.size(); ++k) {
         out << "| " << experiments::name(p.level) << " | " << p.runs[0].placements[k].trial << " |";
@@ -209,10 +231,16 @@ class GroundsSection : public CompareSection {
     }
   }
 
+  // The run a ratio of `r` is taken over: the same ground under Box2D's own contact (the
+  // builders': the chain's).
+  static const GroundRun& reference_of(const Part& p, const GroundRun& r) {
+    return r.way.build == experiments::GroundBuild::Edges ? p.runs[kEdgesOwn] : p.runs[kChainOwn];
+  }
+
   // One row per level and build; `ratios`: with the crowd's figures over the chain's.
   Records ground_records(bool ratios = false) const {
     std::vector<Column> columns = {{"level", "level", "", -10},
-                                   {"build", "built as", "", -9},
+                                   {"build", "built as, answered by", "", -20},
                                    {"boundary_m", "boundary (m)", "", 8},
                                    {"fixtures", "fixtures", "", 7},
                                    {"proxies_per_m", "proxies per m", "", 7},
@@ -225,14 +253,14 @@ class GroundsSection : public CompareSection {
                                    {"narrowphase_ms", "narrow phase (ms)", "", 8},
                                    {"step_ms", "step (ms)", "", 8}};
     if (ratios) {
-      columns.push_back({"narrowphase_ratio", "narrow phase × chain", "", 6});
-      columns.push_back({"step_ratio", "step × chain", "", 6});
+      columns.push_back({"narrowphase_ratio", "narrow phase × own", "", 6});
+      columns.push_back({"step_ratio", "step × own", "", 6});
     }
     Records out(columns);
     for (const Part& p : parts_) {
       for (const GroundRun& r : p.runs) {
         std::vector<Value> row = {Value::text(experiments::name(r.level)),
-                                  Value::text(experiments::name(r.build)),
+                                  Value::text(experiments::name(r.way)),
                                   Value::number(r.boundary, "%.1f"),
                                   Value::count(r.fixtures),
                                   Value::number(r.proxies / r.boundary, "%.2f"),
@@ -245,8 +273,8 @@ class GroundsSection : public CompareSection {
                                   Value::number(r.narrow_ms, "%.1f"),
                                   Value::number(r.step_ms, "%.1f")};
         if (ratios) {
-          row.push_back(Value::number(r.narrow_ms / p.runs[0].narrow_ms, "%.2f"));
-          row.push_back(Value::number(r.step_ms / p.runs[0].step_ms, "%.2f"));
+          row.push_back(Value::number(r.narrow_ms / reference_of(p, r).narrow_ms, "%.2f"));
+          row.push_back(Value::number(r.step_ms / reference_of(p, r).step_ms, "%.2f"));
         }
         out.add(std::move(row));
       }
@@ -256,14 +284,14 @@ class GroundsSection : public CompareSection {
 
   Records glide_records() const {
     Records out({{"level", "", "", -10},
-                 {"build", "", "", -9},
+                 {"build", "", "", -20},
                  {"body", "", "", -20},
                  {"max_vertical_speed", "", "", 9},
                  {"travel", "", "", 9}});
     for (const Part& p : parts_) {
       for (const GroundRun& r : p.runs) {
         for (const experiments::GroundGlide& g : r.glides) {
-          out.add({Value::text(experiments::name(r.level)), Value::text(experiments::name(r.build)),
+          out.add({Value::text(experiments::name(r.level)), Value::text(experiments::name(r.way)),
                    Value::text(g.body), Value::number(g.max_vertical_speed, "%.4f"),
                    Value::number(g.travel, "%.4f")});
         }
@@ -274,14 +302,14 @@ class GroundsSection : public CompareSection {
 
   Records placement_records() const {
     Records out({{"level", "", "", -10},
-                 {"build", "", "", -9},
+                 {"build", "", "", -20},
                  {"trial", "", "", -40},
                  {"on_top", "", "", 6},
                  {"boxes", "", "", 6}});
     for (const Part& p : parts_) {
       for (const GroundRun& r : p.runs) {
         for (const experiments::GroundPlacement& t : r.placements) {
-          out.add({Value::text(experiments::name(r.level)), Value::text(experiments::name(r.build)),
+          out.add({Value::text(experiments::name(r.level)), Value::text(experiments::name(r.way)),
                    Value::text(t.trial), Value::count(t.on_top), Value::count(t.boxes)});
         }
       }

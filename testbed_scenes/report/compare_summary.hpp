@@ -33,12 +33,18 @@ struct WallTimeFigures {
 /// plug-in), from the grounds section.
 struct GroundFigures {
   std::string level;  ///< e.g. "tile grid, 256 × 64 cells of 0.5 m"
-  /// Largest |v_y| (m/s) of the everyday bodies pushed along the top, each side.
-  double chain_vertical_speed = 0, builders_vertical_speed = 0;
-  /// Boxes started 0.4 m inside the ground that ended on top, each side, of `boxes`.
+  /// Largest |v_y| (m/s) of the everyday bodies pushed along the top: the chain under Box2D's
+  /// own contact, the same chain under the plug-in, the builders' ground.
+  double chain_vertical_speed = 0, chain_plugin_vertical_speed = 0, builders_vertical_speed = 0;
+  /// Boxes started 0.4 m inside the ground that ended on top, the chain's and the builders', of
+  /// `boxes`.
   int chain_on_top = 0, builders_on_top = 0, boxes = 0;
-  double narrowphase_ratio = 0;  ///< a crowd's `b2Profile::collide`, builders over chain
-  double step_ratio = 0;         ///< the same for `b2World::Step`
+  /// A crowd's `b2Profile::collide` and `b2World::Step` under the plug-in over Box2D's own on the
+  /// same chain, and on the same two-sided edges.
+  double chain_narrowphase_ratio = 0, chain_step_ratio = 0;
+  double edges_narrowphase_ratio = 0, edges_step_ratio = 0;
+  /// The same for the builders' ground over the chain under Box2D's own contact.
+  double narrowphase_ratio = 0, step_ratio = 0;
 };
 
 /// The largest depth error of one runner over the main table's scenes, and where.

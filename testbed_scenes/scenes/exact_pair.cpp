@@ -36,12 +36,15 @@ std::optional<Polygon<double>> polygon_of(const b2PolygonShape& shape, const Pla
 Result<double> ExactConvexPair::exact(Level level) const {
   ConvexQuery<double> q;
   q.level = level;
-  return b ? collide(a, *b, q) : collide(a, circle, q);
+  if (segment) return b ? collide(*segment, *b, q) : collide(*segment, circle, q);
+  return b ? collide(*a, *b, q) : collide(*a, circle, q);
 }
 
 double ExactConvexPair::overlap_along(const Vec2<double>& u) const {
-  double a_max = a.vertex(0).dot(u);
-  for (int i = 1; i < a.count(); ++i) a_max = std::max(a_max, a.vertex(i).dot(u));
+  const auto vertex = [&](int i) { return segment ? segment->vertex(i) : a->vertex(i); };
+  const int count = segment ? 2 : a->count();
+  double a_max = vertex(0).dot(u);
+  for (int i = 1; i < count; ++i) a_max = std::max(a_max, vertex(i).dot(u));
   if (!b) return a_max - (circle.center.dot(u) - circle.radius);
   double b_min = b->vertex(0).dot(u);
   for (int i = 1; i < b->count(); ++i) b_min = std::min(b_min, b->vertex(i).dot(u));
@@ -51,23 +54,39 @@ double ExactConvexPair::overlap_along(const Vec2<double>& u) const {
 std::optional<ExactConvexPair> exact_convex_pair(const b2Contact& contact) {
   const b2Fixture* fa = contact.GetFixtureA();
   const b2Fixture* fb = contact.GetFixtureB();
-  if (fa->GetType() != b2Shape::e_polygon) return std::nullopt;
-  const auto& a = *static_cast<const b2PolygonShape*>(fa->GetShape());
-  const FrameBInA frame = frame_of(contact);
-  const std::optional<Polygon<double>> pa =
-      polygon_of(a, [](const b2Vec2& p) { return Vec2<double>(p.x, p.y); });
-  if (!pa) return std::nullopt;
+  ExactConvexPair out;
+  out.b_in_a = frame_of(contact);
+  const FrameBInA& frame = out.b_in_a;
+  const b2Shape* shape_a = fa->GetShape();
+  if (shape_a->m_type == b2Shape::e_edge || shape_a->m_type == b2Shape::e_chain) {
+    b2EdgeShape edge;
+    if (shape_a->m_type == b2Shape::e_chain) {
+      static_cast<const b2ChainShape*>(shape_a)->GetChildEdge(&edge, contact.GetChildIndexA());
+    } else {
+      edge = *static_cast<const b2EdgeShape*>(shape_a);
+    }
+    const SegmentOrError<double> s = Segment<double>::make({edge.m_vertex1.x, edge.m_vertex1.y},
+                                                           {edge.m_vertex2.x, edge.m_vertex2.y});
+    if (!s.ok()) return std::nullopt;
+    out.segment = s.segment;
+  } else if (shape_a->m_type == b2Shape::e_polygon) {
+    out.a = polygon_of(*static_cast<const b2PolygonShape*>(shape_a),
+                       [](const b2Vec2& p) { return Vec2<double>(p.x, p.y); });
+    if (!out.a) return std::nullopt;
+  } else {
+    return std::nullopt;
+  }
   if (fb->GetType() == b2Shape::e_circle) {
     const auto& c = *static_cast<const b2CircleShape*>(fb->GetShape());
-    return ExactConvexPair{frame, *pa, std::nullopt, {frame.point(c.m_p), c.m_radius}};
+    out.circle = {frame.point(c.m_p), c.m_radius};
+    return out;
   }
   if (fb->GetType() != b2Shape::e_polygon) return std::nullopt;
   const auto& b = *static_cast<const b2PolygonShape*>(fb->GetShape());
-  if (a.m_count == 3 && b.m_count == 3) return std::nullopt;
-  const std::optional<Polygon<double>> pb =
-      polygon_of(b, [&](const b2Vec2& p) { return frame.point(p); });
-  if (!pb) return std::nullopt;
-  return ExactConvexPair{frame, *pa, pb, {}};
+  if (out.a && out.a->count() == 3 && b.m_count == 3) return std::nullopt;
+  out.b = polygon_of(b, [&](const b2Vec2& p) { return frame.point(p); });
+  if (!out.b) return std::nullopt;
+  return out;
 }
 
 Vec2<double> FrameBInA::direction(const b2Vec2& d) const {

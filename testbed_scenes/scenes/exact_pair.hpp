@@ -38,11 +38,12 @@ struct ExactPair {
 /// is rejected in double (`Triangle<double>::make`).
 std::optional<ExactPair> exact_pair(const b2Contact& contact);
 
-/// A contact beyond two triangles in A's body frame, in double: polygon A and polygon B (a side of
-/// 4 to 8 vertices) or circle B.
+/// A contact beyond two triangles in A's body frame, in double: polygon A (or segment A: an edge or
+/// a chain's edge) and polygon B (a side of 4 to 8 vertices) or circle B.
 struct ExactConvexPair {
   FrameBInA b_in_a;                  ///< B's body frame in A's
-  Polygon<double> a;                 ///< A's polygon as its shape stores it
+  std::optional<Polygon<double>> a;  ///< A's polygon as its shape stores it, or nothing: a segment
+  std::optional<Segment<double>> segment;  ///< A's edge, when `a` is nothing
   std::optional<Polygon<double>> b;  ///< B's polygon moved into A's frame, or nothing: a circle
   Circle<double> circle;             ///< B's circle moved into A's frame, when `b` is nothing
 
@@ -53,7 +54,8 @@ struct ExactConvexPair {
 };
 
 /// The contact's shapes in A's frame when it is a polygon pair with a side of more than 3
-/// vertices or a polygon–circle pair; nothing otherwise, or when `Polygon<double>` rejects one.
+/// vertices, a polygon–circle pair or an edge (chain) pair; nothing otherwise, or when
+/// `Polygon<double>` or `Segment<double>` rejects one.
 std::optional<ExactConvexPair> exact_convex_pair(const b2Contact& contact);
 
 }  // namespace dyop::scenes

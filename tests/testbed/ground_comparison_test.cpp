@@ -1,5 +1,5 @@
 // The grounds section's levels: a tile grid's cells traced into chain loops that enclose exactly
-// its solid cells, and the same level built as chains and by the builders, side by side.
+// its solid cells, and the same level built as chains, as edges and by the builders, side by side.
 #include <box2d/box2d.h>
 #include <gtest/gtest.h>
 
@@ -98,29 +98,36 @@ TEST(TileLoops, RefuseCellsThatAreNotColumnsTimesRowsLong) {
   EXPECT_THROW(tile_loops(Cells(), 0, 0, 1, b2Vec2(0, 0)), std::invalid_argument);
 }
 
-// The tile grid (256 × 64 cells) both ways, a short crowd: the builders' ground lets every
-// everyday body glide and pushes boxes started under its top back out; the chain, one-sided, lets
-// those boxes through. Both grounds have the same boundary.
-TEST(Grounds, TheBuildersGroundGlidesAndPushesOutWhatTheChainLetsThrough) {
+// The tile grid (256 × 64 cells) every way, a short crowd: under the plug-in every everyday
+// body glides on the chain, on the two-sided edges and on the builders' ground; the builders'
+// ground pushes boxes started under its top back out, where the chain, one-sided, lets them
+// through (under either contact). Every way has the same boundary.
+TEST(Grounds, UnderThePlugInEveryGroundGlidesAndTheBuildersPushOutWhatTheChainLetsThrough) {
   const GroundTiming timing{20, 5, 1};
   const auto runs = compare_ground(GroundLevel::TileGrid, timing, box2d::Config{});
-  const GroundRun& chain = runs[0];
-  const GroundRun& builders = runs[1];
-  EXPECT_EQ(chain.build, GroundBuild::Chain);
-  EXPECT_EQ(builders.build, GroundBuild::Builder);
-  EXPECT_DOUBLE_EQ(chain.boundary, builders.boundary);
-  EXPECT_GT(builders.fixtures, 0);
-  ASSERT_EQ(builders.glides.size(), 4u);
-  for (const GroundGlide& g : builders.glides) {
-    EXPECT_LE(g.max_vertical_speed, 0.05) << g.body;
-    EXPECT_GE(g.travel, 0.98) << g.body;
+  ASSERT_EQ(runs.size(), ground_ways.size());
+  for (std::size_t w = 0; w < runs.size(); ++w) {
+    EXPECT_EQ(runs[w].way.build, ground_ways[w].build);
+    EXPECT_EQ(runs[w].way.plugin, ground_ways[w].plugin);
+    EXPECT_DOUBLE_EQ(runs[w].boundary, runs[0].boundary);
+    EXPECT_GT(runs[w].fixtures, 0);
+    ASSERT_EQ(runs[w].glides.size(), 4u);
+    if (!runs[w].way.plugin) continue;
+    for (const GroundGlide& g : runs[w].glides) {
+      EXPECT_LE(g.max_vertical_speed, 0.01) << name(runs[w].way) << ": " << g.body;
+      EXPECT_GE(g.travel, 0.99) << name(runs[w].way) << ": " << g.body;
+    }
   }
+  const GroundRun& chain = runs[0];
+  const GroundRun& builders = runs[4];
+  ASSERT_EQ(builders.way.build, GroundBuild::Builder);
   ASSERT_EQ(chain.placements.size(), builders.placements.size());
   for (std::size_t k = 0; k < builders.placements.size(); ++k) {
     const GroundPlacement& p = builders.placements[k];
     EXPECT_EQ(p.on_top, p.boxes) << p.trial;
     if (p.trial.find("0.4 m inside") != std::string::npos) {
       EXPECT_EQ(chain.placements[k].on_top, 0) << "a one-sided chain lets them through";
+      EXPECT_EQ(runs[1].placements[k].on_top, 0) << "under the plug-in too";
     }
   }
 }

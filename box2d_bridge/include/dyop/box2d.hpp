@@ -327,10 +327,11 @@ void collide_polygon_and_circle(b2Manifold* manifold, Backend backend,
 
 /// The plug-in's answer for an edge (or a chain's child edge, from `b2ChainShape::GetChildEdge`) as
 /// fixture A and a polygon, exactly what its contact's `Evaluate` computes with `config`: the exact
-/// solver with Box2D's one-sided rule and, for a one-sided edge, the masks of its ghost vertices;
-/// for a two-sided edge, `memory`'s masks (`ContactMemory::internal_edges`; none: both sides, as
-/// Box2D's); B's from `memory.masks_b`. Box2D's `b2CollideEdgeAndPolygon` for `Backend::Box2D`,
-/// `Config::triangles_only` and `Config::edges_and_chains` off. Counted in `stats`.
+/// solver with Box2D's one-sided rules and, for a one-sided edge, the masks of its ghost vertices
+/// (set in `memory` by the first call); for a two-sided edge, `memory`'s masks
+/// (`ContactMemory::internal_edges`; none: both sides, as Box2D's); B's from `memory.masks_b`.
+/// Box2D's `b2CollideEdgeAndPolygon` for `Backend::Box2D`, `Config::triangles_only` and
+/// `Config::edges_and_chains` off. Counted in `stats`.
 void collide_edge_and_polygon(b2Manifold* manifold, Backend backend, const b2EdgeShape& edge,
                               const b2Transform& xf_a, const b2PolygonShape& polygon,
                               const b2Transform& xf_b, ContactMemory* memory = nullptr,
