@@ -170,6 +170,15 @@ void PolygonPair::write(b2Manifold* manifold, const Manifold<float>& m,
   write_polygon_manifold(manifold, m, a, b, pose.b_in_a);
 }
 
+Result<float> solve_in_place(const InPlace& a, const Placed& b, const ConvexQuery<float>& q) {
+  return dyop::detail::collide_polygons(a, b, q);
+}
+
+Result<float> solve_in_place(const InPlace& a, const Circle<float>& b,
+                             const ConvexQuery<float>& q) {
+  return dyop::detail::collide_polygon_circle(a, b, q);
+}
+
 // Edge pairs.
 
 void EdgePair::write_faces(b2Manifold* manifold, const Manifold<float>& mf, const b2PolygonShape* b,

@@ -97,6 +97,12 @@ struct PairPose {
   float size_bound() const { return size_bound_per_radius_sum * radius_sum; }
 };
 
+// The exact solver on shapes read in place: one copy of its code for every family that reads
+// them so, polygons and edges alike (out of line: a world whose bodies meet every family runs each
+// path's code, and copies of the solver in each would not stay in the instruction cache).
+Result<float> solve_in_place(const InPlace& a, const Placed& b, const ConvexQuery<float>& q);
+Result<float> solve_in_place(const InPlace& a, const Circle<float>& b, const ConvexQuery<float>& q);
+
 // Separation of two polygons along face `face` (A's edge `face`, or B's edge `face − a.m_count`;
 // `b_in_a`: B's body frame given in A's), with the other polygon's whole support: a lower bound
 // on their distance. The face's normal is rotated into the other body's frame, so the other's
@@ -343,7 +349,7 @@ struct PolygonCirclePair : PolygonAPair {
 };
 
 // What the edge families share: A is an edge (a `b2EdgeShape`, or a chain's child edge made for
-// the evaluation), read by the solver as a `Segment` (`EdgeInPlace`); answered exactly unless
+// the evaluation), read by the solver as a `Segment` (`EdgeSides`); answered exactly unless
 // `Config::edges_and_chains` is off; Box2D's one-sided rules first (`excluded`).
 struct EdgePair : ExactPair {
   const b2EdgeShape& a;
@@ -369,13 +375,8 @@ struct EdgePair : ExactPair {
     const float distance = b2Dot(b2Vec2(along.y, -along.x), offset);
     return distance < 0.0f ? -distance : 0.0f;
   }
-  // The segment as the solver reads it (its front normal computed as Box2D's).
-  EdgeInPlace segment(const PairPose& pose) const { return EdgeInPlace(a, pose.size_bound()); }
   // A's side `face`'s unit normal (0 the front, 1 the back), as the solver reads it.
-  b2Vec2 side_normal(int face) const {
-    const Vec2<float> n = EdgeInPlace(a, 0).normal(face);
-    return {n.x(), n.y()};
-  }
+  b2Vec2 side_normal(int face) const { return EdgeSides(a).normals[face]; }
   // The first vertex of A's side `face` (the front runs from `m_vertex1`, the back back to it).
   const b2Vec2& side_start(int face) const { return face == 0 ? a.m_vertex1 : a.m_vertex2; }
   // Writes the solver's manifold `mf` with A's side as the reference face: `e_faceA`, its normal
@@ -437,11 +438,11 @@ struct EdgeCirclePair : EdgePair {
   float face_separation(int face, const PairPose& pose) const {
     return b2Dot(side_normal(face), pose.centroid_b_in_a - side_start(face)) - b.m_radius;
   }
-  [[gnu::always_inline]] inline Result<float> solve(const Setting&, const Query& q,
-                                                    const PairPose& pose, ContactMemory&) const {
+  Result<float> solve(const Setting&, const Query& q, const PairPose& pose, ContactMemory&) const {
     const b2Vec2& center = pose.centroid_b_in_a;
-    return dyop::detail::collide_polygon_circle(segment(pose),
-                                                Circle<float>{{center.x, center.y}, b.m_radius}, q);
+    const EdgeSides sides(a);
+    return solve_in_place(sides.in_place(pose.size_bound()),
+                          Circle<float>{{center.x, center.y}, b.m_radius}, q);
   }
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const {
     write_circle_manifold(manifold, m, side_normal(m.reference_edge), a.m_vertex1, b,
@@ -450,64 +451,24 @@ struct EdgeCirclePair : EdgePair {
   void box2d(b2Manifold* manifold) const { b2CollideEdgeAndCircle(manifold, &a, xf_a, &b, xf_b); }
 };
 
-// The solver with both vertex counts known to the compiler (`Counted`).
-template <int NA, int NB>
-[[gnu::always_inline]] inline Result<float> solve_counted(const b2PolygonShape& a,
-                                                          const b2PolygonShape& b,
-                                                          const PairPose& pose,
-                                                          const ConvexQuery<float>& q) {
-  const float bound = pose.size_bound();
-  return dyop::detail::collide_polygons(Counted<InPlace, NA>(a, bound),
-                                        Counted<Placed, NB>(b, pose.b_in_a, bound), q);
-}
-
 inline Result<float> PolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
                                         ContactMemory&) const {
-  // The commonest bodies: triangles, `SetAsBox` boxes, hexagons.
-  switch (a.m_count << 4 | b.m_count) {
-    case 0x34:
-      return solve_counted<3, 4>(a, b, pose, q);
-    case 0x36:
-      return solve_counted<3, 6>(a, b, pose, q);
-    case 0x43:
-      return solve_counted<4, 3>(a, b, pose, q);
-    case 0x44:
-      return solve_counted<4, 4>(a, b, pose, q);
-    case 0x46:
-      return solve_counted<4, 6>(a, b, pose, q);
-    case 0x63:
-      return solve_counted<6, 3>(a, b, pose, q);
-    case 0x64:
-      return solve_counted<6, 4>(a, b, pose, q);
-    case 0x66:
-      return solve_counted<6, 6>(a, b, pose, q);
-    default:
-      return dyop::detail::collide_polygons(InPlace(a, pose.size_bound()),
-                                            Placed(b, pose.b_in_a, pose.size_bound()), q);
-  }
+  return solve_in_place(InPlace(a, pose.size_bound()), Placed(b, pose.b_in_a, pose.size_bound()),
+                        q);
 }
 
 inline Result<float> EdgePolygonPair::solve(const Setting&, const Query& q, const PairPose& pose,
                                             ContactMemory&) const {
-  const float bound = pose.size_bound();
-  const EdgeInPlace s = segment(pose);
-  switch (b.m_count) {
-    case 3:
-      return dyop::detail::collide_polygons(s, Counted<Placed, 3>(b, pose.b_in_a, bound), q);
-    case 4:
-      return dyop::detail::collide_polygons(s, Counted<Placed, 4>(b, pose.b_in_a, bound), q);
-    case 6:
-      return dyop::detail::collide_polygons(s, Counted<Placed, 6>(b, pose.b_in_a, bound), q);
-    default:
-      return dyop::detail::collide_polygons(s, Placed(b, pose.b_in_a, bound), q);
-  }
+  const EdgeSides sides(a);
+  return solve_in_place(sides.in_place(pose.size_bound()),
+                        Placed(b, pose.b_in_a, pose.size_bound()), q);
 }
 
 inline Result<float> PolygonCirclePair::solve(const Setting&, const Query& q, const PairPose& pose,
                                               ContactMemory&) const {
   const b2Vec2& center = pose.centroid_b_in_a;
-  const Circle<float> circle{{center.x, center.y}, b.m_radius};
-  return dyop::detail::collide_polygon_circle(InPlace(a, pose.size_bound()), circle, q);
+  return solve_in_place(InPlace(a, pose.size_bound()),
+                        Circle<float>{{center.x, center.y}, b.m_radius}, q);
 }
 
 }  // namespace dyop::box2d::detail

@@ -12,30 +12,38 @@
 
 namespace dyop::box2d::detail {
 
-// A `b2PolygonShape` in its body frame as the solver reads a polygon
-// (`detail::collide_polygon_circle`, `detail::collide_polygons`), in place: what
-// `Polygon<float>::from_validated` would hold, without building it. `size_bound`: at least its
-// longest edge (metres; `PairPose::size_bound`), so that it is measured only where the solver needs
-// it.
+// A shape in its body frame as the solver reads a polygon (`detail::collide_polygon_circle`,
+// `detail::collide_polygons`), in place: what `Polygon<float>::from_validated` would hold, without
+// building it: a `b2PolygonShape`'s own vertices and normals, or a `b2EdgeShape`'s ends and the
+// normals of its two sides (`EdgeSides`: a segment as the solver reads one, `Segment`). One type
+// for both, so that polygon pairs and edge pairs run one instantiation of the solver. `size_bound`:
+// at least its longest edge (metres; `PairPose::size_bound`), so that it is measured only where the
+// solver needs it.
 class InPlace {
  public:
-  InPlace(const b2PolygonShape& shape, float size_bound) : shape_(shape), size_bound_(size_bound) {}
-  int count() const { return shape_.m_count; }
-  Vec2<float> vertex(int i) const { return {shape_.m_vertices[i].x, shape_.m_vertices[i].y}; }
-  Vec2<float> normal(int i) const { return {shape_.m_normals[i].x, shape_.m_normals[i].y}; }
-  int next(int i) const { return i + 1 < shape_.m_count ? i + 1 : 0; }
+  InPlace(const b2Vec2* vertices, const b2Vec2* normals, int count, float size_bound)
+      : v_(vertices), n_(normals), count_(count), size_bound_(size_bound) {}
+  InPlace(const b2PolygonShape& shape, float size_bound)
+      : InPlace(shape.m_vertices, shape.m_normals, shape.m_count, size_bound) {}
+  int count() const { return count_; }
+  Vec2<float> vertex(int i) const { return {v_[i].x, v_[i].y}; }
+  Vec2<float> normal(int i) const { return {n_[i].x, n_[i].y}; }
+  int next(int i) const { return i + 1 < count_ ? i + 1 : 0; }
   // The longest edge, measured in the body frame on each call.
   float size() const {
     return dyop::detail::validated_size<float>(
-        shape_.m_count, [&](int i) { return vertex(i); }, [&](int i) { return normal(i); });
+        count_, [&](int i) { return vertex(i); }, [&](int i) { return normal(i); });
   }
   float size_bound() const { return size_bound_; }
-  // Box2D's vertices are CCW: the caller's order is the solver's.
+  // Box2D's vertices are CCW, and an edge's sides run from its first end: the caller's order is
+  // the solver's.
   static int input_vertex(int i) { return i; }
   static int input_edge(int i) { return i; }
 
  private:
-  const b2PolygonShape& shape_;
+  const b2Vec2* v_;
+  const b2Vec2* n_;
+  int count_;
   float size_bound_;
 };
 
@@ -61,44 +69,21 @@ class Placed : public InPlace {
   const b2Transform& xf_;
 };
 
-// `P` (`InPlace` or `Placed`) holding a shape of exactly `N` vertices, known to the compiler: the
-// solver's loops over vertices and axes then unroll (docs/measurements.md, "Everyday shapes").
-template <class P, int N>
-class Counted : public P {
- public:
-  using P::P;
-  static constexpr int count() { return N; }
-  static constexpr int next(int i) { return i + 1 < N ? i + 1 : 0; }
-};
+// A `b2EdgeShape` as the solver reads a segment (`Segment`): its ends `m_vertex1`, `m_vertex2`,
+// the normal of its front (Box2D's edge normal: to the right of the first end → the second,
+// normalised by the reciprocal of the length, as Box2D does) and of its back.
+struct EdgeSides {
+  b2Vec2 vertices[2];
+  b2Vec2 normals[2];
 
-// A `b2EdgeShape` in its body frame as the solver reads a segment (`Segment`), in place: vertex 0
-// `m_vertex1`, vertex 1 `m_vertex2`, normal 0 the front as Box2D computes its edge normal
-// (normalised by the reciprocal of the length), normal 1 its opposite. `size_bound` as
-// `InPlace`'s.
-class EdgeInPlace {
- public:
-  EdgeInPlace(const b2EdgeShape& edge, float size_bound) : edge_(edge), size_bound_(size_bound) {
+  explicit EdgeSides(const b2EdgeShape& edge) : vertices{edge.m_vertex1, edge.m_vertex2} {
     b2Vec2 along = edge.m_vertex2 - edge.m_vertex1;
-    length_ = along.Normalize();
-    front_ = {along.y, -along.x};
+    along.Normalize();
+    normals[0] = {along.y, -along.x};
+    normals[1] = -normals[0];
   }
-  static constexpr int count() { return 2; }
-  Vec2<float> vertex(int i) const {
-    const b2Vec2& v = i == 0 ? edge_.m_vertex1 : edge_.m_vertex2;
-    return {v.x, v.y};
-  }
-  Vec2<float> normal(int i) const { return i == 0 ? front_ : Vec2<float>(-front_); }
-  static constexpr int next(int i) { return 1 - i; }
-  float size() const { return length_; }
-  float size_bound() const { return size_bound_; }
-  static constexpr int input_vertex(int i) { return i; }
-  static constexpr int input_edge(int i) { return i; }
-
- private:
-  const b2EdgeShape& edge_;
-  float size_bound_;
-  float length_;
-  Vec2<float> front_;
+  // The segment read in place (`size_bound`: as `InPlace`'s). Reads this object: keep it alive.
+  InPlace in_place(float size_bound) const { return InPlace(vertices, normals, 2, size_bound); }
 };
 
 }  // namespace dyop::box2d::detail
