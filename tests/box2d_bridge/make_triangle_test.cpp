@@ -61,8 +61,9 @@ TEST(MakeTriangle, RejectsWhatTriangleMakeRejectsWithItsReason) {
 
 // Box2D's own Set on the same points, to show what the checks prevent: under 2.4.1 it asserts (its
 // asserts are live in Debian's build) or, without asserts, makes a 2×2 box; under 2.4.2 it refuses
-// more than make_triangle does and leaves the shape empty.
-void box2d_set(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2) {
+// more than make_triangle does and leaves the shape empty. (Under 2.4.2 the tests call it only in
+// branches discarded at compile time: [[maybe_unused]].)
+[[maybe_unused]] void box2d_set(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2) {
   const b2Vec2 points[3] = {p0, p1, p2};
   b2PolygonShape shape;
   testing::box2d_set(shape, points, 3);
@@ -77,8 +78,8 @@ void expect_vertices(const b2PolygonShape& shape, const std::array<b2Vec2, 3>& e
   }
 }
 
-// Under 2.4.1 Box2D stores 2.4.1's 2×2 box (SetAsBox(1, 1)) where it cannot make the hull.
-bool is_box2d_fallback_box(const b2PolygonShape& s) {
+// Under 2.4.1 Box2D stores a 2×2 box (SetAsBox(1, 1)) where it cannot make the hull.
+[[maybe_unused]] bool is_box2d_fallback_box(const b2PolygonShape& s) {
   return s.m_count == 4 && s.m_vertices[0].x == -1.0f && s.m_vertices[0].y == -1.0f &&
          s.m_vertices[2].x == 1.0f && s.m_vertices[2].y == 1.0f;
 }
