@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
@@ -99,6 +100,20 @@ b2BodyType body_type(int k) {
 const char* type_name(int k) {
   constexpr const char* names[4] = {"static", "kinematic", "dynamic", "bullet"};
   return names[k & 3];
+}
+
+// Box2D's Set of `n` points, and whether it left a polygon: 2.4.1's returns nothing (what
+// polygon_refusal lets through it makes); 2.4.2's returns false and leaves the shape empty where
+// its hull welds points within 4·b2_linearSlop or drops one within 2·b2_linearSlop of its
+// neighbours' line, both wider than 2.4.1's, down to fewer than three points.
+template <class Shape>
+bool set_polygon(Shape& shape, const b2Vec2* v, int n) {
+  if constexpr (std::is_same_v<decltype(shape.Set(v, n)), bool>) {
+    return shape.Set(v, n);
+  } else {
+    shape.Set(v, n);
+    return true;
+  }
 }
 
 // Why Box2D 2.4.1 would assert on polygon `v` (CCW for more than 3 vertices) on a body, or nullptr.
@@ -346,7 +361,7 @@ void Player::add_triangle(b2Body& body, const WorldOp& op) {
   if (const char* why = polygon_refusal(v, 3)) return skip(why);
   if (!room_for_fixtures(1)) return;
   b2PolygonShape shape;
-  shape.Set(v, 3);
+  if (!set_polygon(shape, v, 3)) return skip("Box2D 2.4.2's hull refuses these points");
   add_fixture(body, shape, static_cast<std::uint8_t>((op.arg[1] >> 5) | (op.arg[6] & 0x38)));
   ++result_.played;
 }
@@ -421,7 +436,7 @@ void Player::add_polygon(b2Body& body, const WorldOp& op) {
   if (const char* why = polygon_refusal(v, n)) return skip(why);
   if (!room_for_fixtures(1)) return;
   b2PolygonShape shape;
-  shape.Set(v, n);
+  if (!set_polygon(shape, v, n)) return skip("Box2D 2.4.2's hull refuses these points");
   add_fixture(body, shape, op.arg[5]);
   ++result_.played;
 }

@@ -18,7 +18,7 @@ set(dyop_test_costs
   "^EveryMethod/MethodAccuracy\\." 1
   "^Recycling\\." 1
   "^ExactBackends/SkipsInEveryScene\\..*/(tiles|tile_map)_" 0.9
-  "^EveryContact/Stacking\\.PilesOfConcaveBodies" 0.9
+  "/StacksAndPiles(UnderDyopFast)?\\.PilesOfConcaveBodies" 0.9
   "^Catalogue/LinCannySkips\\." 0.8
   "^Structures/Standing\\." 0.8
   "^ManyWorlds\\." 0.7)

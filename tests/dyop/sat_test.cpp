@@ -1,6 +1,8 @@
 // The exact reference `sat` on cases with answers worked by hand, at every query level.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "dyop/sat.hpp"
 #include "support/make_triangle.hpp"
 #include "support/result_checks.hpp"
@@ -101,18 +103,23 @@ TYPED_TEST(Sat, FlatFaceOnFaceGivesTwoManifoldPointsWithTheirSeparations) {
 
 TYPED_TEST(Sat, ManifoldClipsTheIncidentEdgeToTheReferenceFace) {
   using T = TypeParam;
-  const auto a = tri<T>(-1, 0, 0, -5, 1, 0);       // top face only 2 wide
-  const auto b = tri<T>(-3, -0.1, 3, -0.1, 0, 3);  // bottom face 6 wide
+  const auto a = tri<T>(-1, 0, 0, -5, 1, 0);       // top face y = 0, x in [-1, 1]
+  const auto b = tri<T>(-3, -0.1, 3, -0.1, 0, 3);  // bottom face y = -0.1, x in [-3, 3]
   const Result<T> r = sat(a, b, {Level::Manifold});
   ASSERT_EQ(r.status, Status::Penetrating);
   const Manifold<T>& m = r.manifold;
   ASSERT_EQ(m.point_count, 2);
-  // The reference face is B's bottom (A's apex region is narrow): the points are A's clipped
-  // incident edge, or B's edge clipped to A's face; either way they lie within x ∈ [-3, 3].
+  // The two faces overlap 0.1 along y, a tie, and B's face is the reference only when it beats
+  // A's by more than the hysteresis: A's top is the reference, B's bottom the incident edge.
+  // Clipped to the reference face's side lines x = ±1, B's edge keeps x in [-1, 1]: the points
+  // are (±1, -0.1), 0.1 deep. Unclipped they would be B's ends, x = ±3.
+  EXPECT_TRUE(m.reference_is_a);
   for (int i = 0; i < m.point_count; ++i) {
-    EXPECT_LE(std::abs(m.points[i].point.x()), 3 + tol<T>());
-    EXPECT_LE(m.points[i].separation, 0);
+    EXPECT_NEAR(std::abs(m.points[i].point.x()), 1, tol<T>()) << "point " << i;
+    EXPECT_NEAR(m.points[i].point.y(), -0.1, tol<T>()) << "point " << i;
+    EXPECT_NEAR(m.points[i].separation, -0.1, tol<T>()) << "point " << i;
   }
+  EXPECT_NEAR(m.points[0].point.x() + m.points[1].point.x(), 0, tol<T>()) << "one at each end";
 }
 
 TYPED_TEST(Sat, ManifoldKeepsSpeculativePointsWithinTheMargin) {

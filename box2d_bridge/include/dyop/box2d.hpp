@@ -424,13 +424,18 @@ struct TriangleShape {
   /// Static, human-readable: `describe(triangle_error)` when `error == Triangle`, else
   /// `describe(error)`.
   const char* message = "";
-  b2PolygonShape shape;  ///< valid only when `ok()`: 3 CCW vertices (Box2D's order), skin radius
+  /// Valid only when `ok()`: 3 CCW vertices in Box2D 2.4.1's order (under 2.4.2 too), skin radius.
+  b2PolygonShape shape;
   bool ok() const { return error == ShapeError::None; }  ///< true when `error == None`
 };
 
 /// A `b2PolygonShape` triangle from three body-frame points (any winding), or the reason it cannot
 /// be one, checked before Box2D 2.4 can assert (thin triangles abort in its centroid) or silently
-/// turn a bad hull into a 1×1 box. Box2D stores the vertices CCW starting from the rightmost one.
+/// turn a bad hull into a 2×2 box. The vertices are stored as Box2D 2.4.1's `Set` stores them: the
+/// rightmost first (of two, the lower), then CCW. Under Box2D 2.4.2, whose `Set` welds vertices
+/// within 2 cm and drops those within 1 cm of their neighbours' line (and then leaves the shape
+/// empty), the shape is built through `Set(const b2Hull&)` in that order: both releases give the
+/// same bits (`dyop/box2d_release.hpp`).
 TriangleShape make_triangle(const b2Vec2& p0, const b2Vec2& p1, const b2Vec2& p2);
 
 }  // namespace dyop::box2d
