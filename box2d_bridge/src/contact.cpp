@@ -301,6 +301,7 @@ bool Contact::fixed_masks(ContactMemory& memory) const {
     if (!ends) return false;
     const ShapeMasks a = side_masks(*ends, on_edge_back(memory.shapes));
     memory.internal_edges = {a.edges, a.closed_vertices};
+    memory.edge_ends = *ends;
   }
   memory.masks_b = *b;
   return true;
@@ -317,8 +318,8 @@ void Contact::find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMem
     memory.internal_edges = {a.edges, a.closed_vertices};
   } else if (two_sided_edge(*m_fixtureA)) {
     const std::optional<EdgeEnds> fixed = fixed_edge_ends(*m_fixtureA);
-    const ShapeMasks a =
-        side_masks(fixed ? *fixed : edge_ends(*m_fixtureA), on_edge_back(memory.shapes));
+    memory.edge_ends = fixed ? *fixed : edge_ends(*m_fixtureA);
+    const ShapeMasks a = side_masks(memory.edge_ends, on_edge_back(memory.shapes));
     memory.internal_edges = {a.edges, a.closed_vertices};
   }  // a one-sided edge's masks stay: its shape's
   const bool b_has_edges = family == Family::Polygons || family == Family::EdgeAndPolygon;
@@ -412,9 +413,22 @@ void fetch_next_bodies(const b2Contact& contact) {
 // the next contact's bodies fetched first, so that their loads overlap this evaluation.
 void Contact::Evaluate(b2Manifold* manifold, const b2Transform& xf_a, const b2Transform& xf_b) {
   fetch_next_bodies(*this);
+  if (manifold->pointCount == 0 && EdgePair::accepted_shapes(memory_)) face_edge(xf_a, xf_b);
   const Paths& path = paths[static_cast<int>(memory_.shapes)];
   if (recycling_.slack > 0) return path.keep_or_go_on(*this, manifold, xf_a, xf_b);
   path.skip_or_answer(*this, manifold, xf_a, xf_b);
+}
+
+void Contact::face_edge(const b2Transform& xf_a, const b2Transform& xf_b) {
+  const b2Shape* a = m_fixtureA->GetShape();
+  if (a->m_type != b2Shape::e_edge) return;
+  const auto& edge = *static_cast<const b2EdgeShape*>(a);
+  if (edge.m_oneSided) return;
+  const b2Shape* b = m_fixtureB->GetShape();
+  const b2Vec2& centroid = b->m_type == b2Shape::e_circle
+                               ? static_cast<const b2CircleShape*>(b)->m_p
+                               : static_cast<const b2PolygonShape*>(b)->m_centroid;
+  face_edge_side(memory_, on_back_of(edge, b2MulT(xf_a, b2Mul(xf_b, centroid))));
 }
 
 void Contact::fresh_manifold(b2Manifold* manifold) const {

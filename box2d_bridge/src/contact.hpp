@@ -183,6 +183,11 @@ class Contact final : public b2Contact {
   // contact list is short (a static body's spans the world).
   std::optional<InternalEdges> half_from_body(const b2Fixture& fixture, std::uint8_t epoch) const;
 
+  // A pair of a two-sided edge that touched nothing last step takes its side afresh from B's
+  // centroid (`face_edge_side`): the side is decided as the pair starts touching, and kept while
+  // it touches but for going around an end (`EdgePair::faces_away`).
+  void face_edge(const b2Transform& xf_a, const b2Transform& xf_b);
+
   // Its edge (fixture A of an edge family): the fixture's own, or its chain's child edge, made in
   // `child`.
   const b2EdgeShape& edge_a(b2EdgeShape& child) const {

@@ -122,13 +122,18 @@ ShapeMasks edge_internal_edges(const b2Fixture& fixture, int child, bool back) {
   if (shape->m_type != b2Shape::e_edge) return {};
   const auto& edge = *static_cast<const b2EdgeShape*>(shape);
   if (edge.m_oneSided) return detail::one_sided_masks(edge);
-  const std::optional<detail::EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
-  return detail::side_masks(fixed ? *fixed : detail::edge_ends(fixture), back);
+  return detail::side_masks(edge_ends(fixture), back);
+}
+
+EdgeEnds edge_ends(const b2Fixture& fixture) {
+  if (!detail::two_sided_edge(fixture)) return {};
+  const std::optional<EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
+  return fixed ? *fixed : detail::edge_ends(fixture);
 }
 
 std::optional<ShapeMasks> fixed_edge_internal_edges(const b2Fixture& fixture, bool back) {
   if (!detail::two_sided_edge(fixture)) return std::nullopt;
-  const std::optional<detail::EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
+  const std::optional<EdgeEnds> fixed = detail::fixed_edge_ends(fixture);
   if (!fixed) return std::nullopt;
   return detail::side_masks(*fixed, back);
 }

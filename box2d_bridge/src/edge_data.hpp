@@ -184,7 +184,7 @@ inline std::optional<EdgeEnds> fixed_edge_ends(const b2Fixture& fixture) {
   std::uint64_t key;
   std::memcpy(&key, &edge.m_vertex0, sizeof key);
   if (key != edge_ends_key(fixture)) return std::nullopt;
-  EdgeEnds ends;
+  EdgeEnds ends{};
   std::memcpy(static_cast<void*>(&ends), &edge.m_vertex3, sizeof ends);
   return ends;
 }

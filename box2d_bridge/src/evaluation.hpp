@@ -135,9 +135,10 @@ template <class Pair>
 // not apart beyond the skins (it runs the solver again with them); a single pair's as its caller
 // set them in `memory`. `contact`: the world's contact, whose memory is `memory` and `masks`,
 // nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
-// `FoundMasks::motion`), nullptr for none.
+// `FoundMasks::motion`), nullptr for none. Nothing when B, the masks known, faces another edge
+// than A (`EdgePair::faces_away`).
 template <class Pair>
-[[gnu::always_inline]] inline Result<float> solve_with_masks(
+[[gnu::always_inline]] inline std::optional<Result<float>> solve_with_masks(
     const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
     const Contact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
   typename Pair::Query q;
@@ -153,12 +154,16 @@ template <class Pair>
     } else if (contact) {
       put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
     }
-    if (!put_off) pair.take_masks(q, memory);
+    if (!put_off) {
+      if (pair.faces_away(pose, memory)) return std::nullopt;
+      pair.take_masks(q, memory);
+    }
   }
   Result<float> r = pair.solve(setting, q, pose, memory);
   if (put_off && needs_masks(r, q.margin)) {
     masks->found_now(contact->world_fixtures());
     contact->find_masks(*masks, setting.epoch, memory);
+    if (pair.faces_away(pose, memory)) return std::nullopt;
     pair.take_masks(q, memory);
     if (Pair::any_masks(q)) r = pair.solve(setting, q, pose, memory);
   }
@@ -202,14 +207,20 @@ template <class Pair>
         if (recycling) remember(setting, pose, *manifold, *gap, contact, *recycling);
         return;
       }
-      const Result<float> r =
+      const std::optional<Result<float>> r =
           solve_with_masks(setting, pair, pose, memory, contact, masks, recycling);
-      if (r.status != Status::Invalid) {
-        memory.last_face = judged_face(r.manifold, pair.count_a());
-        pair.write(manifold, r.manifold, pose);
+      if (!r) {  // B faces another edge: no contact, judged afresh next time
+        manifold->pointCount = 0;
+        memory.last_face = -1;
+        if (recycling) remember(setting, pose, *manifold, 0, contact, *recycling);
+        return;
+      }
+      if (r->status != Status::Invalid) {
+        memory.last_face = judged_face(r->manifold, pair.count_a());
+        pair.write(manifold, r->manifold, pose);
         if (manifold->pointCount > 0) count.manifolds.add();
         if (recycling) {
-          remember(setting, pose, *manifold, pair.gap(r, pose, memory), contact, *recycling);
+          remember(setting, pose, *manifold, pair.gap(*r, pose, memory), contact, *recycling);
         }
         return;
       }

@@ -471,6 +471,13 @@ class EndRays {
   std::vector<b2Vec2>& rays_;
 };
 
+// `EdgeEnds::corner_cos` of a free space spanning `angle` (radians) beside an edge's end: its
+// cosine in 127ths rounded down, where narrower than a half-turn by more than the flat tolerance.
+std::int8_t corner_cos(float angle) {
+  if (!(angle < b2_pi - std::asin(flat_outline_sine))) return -127;
+  return static_cast<std::int8_t>(std::max(-127.0f, std::floor(127 * std::cos(angle))));
+}
+
 // The angle (0, 2π] from `from` to `to` turning counter-clockwise (`ccw`) or clockwise.
 float turn_angle(const b2Vec2& from, const b2Vec2& to, bool ccw) {
   float a = std::atan2(b2Cross(from, to), b2Dot(from, to));
@@ -481,7 +488,7 @@ float turn_angle(const b2Vec2& from, const b2Vec2& to, bool ccw) {
 }  // namespace
 
 EdgeEnds edge_ends(const b2Fixture& fixture) {
-  EdgeEnds out;
+  EdgeEnds out{};
   if (fixture.GetType() != b2Shape::e_edge) return out;
   const auto& edge = *static_cast<const b2EdgeShape*>(fixture.GetShape());
   // A flat or reflex end: the free space on that side spans at most a half-turn and the flat
@@ -504,11 +511,34 @@ EdgeEnds edge_ends(const b2Fixture& fixture) {
       back = std::min(back, k == 0 ? ccw : cw);
     }
     const auto bit = static_cast<std::uint8_t>(1u << k);
-    if (!rays.rays().empty()) out.neighbours |= bit;
     if (front <= most) out.closed_front |= bit;
     if (back <= most) out.closed_back |= bit;
+    out.corner_cos[k][0] = corner_cos(front);
+    out.corner_cos[k][1] = corner_cos(back);
   }
   return out;
+}
+
+bool beyond_corner(const EdgeEnds& ends, const b2Vec2& v1, const b2Vec2& v2, bool back,
+                   const b2Vec2& c) {
+  const int side = back ? 1 : 0;
+  // The body's side's normal, unnormalised (|v2 − v1|): the front is right of v1 → v2.
+  const b2Vec2 along = v2 - v1;
+  const b2Vec2 normal = back ? b2Vec2(-along.y, along.x) : b2Vec2(along.y, -along.x);
+  for (int k = 0; k < 2; ++k) {
+    const int code = ends.corner_cos[k][side];
+    if ((ends.neighbours() >> k & 1u) == 0 || code <= -127) continue;
+    // In the frame of the end: x along the edge into it, y toward the body's side; the corner's
+    // other edge leaves the end at angle θ from x toward y, and c lies beyond it when
+    // cos θ · y > sin θ · x (both sides scaled by |v2 − v1|).
+    const b2Vec2 d = c - (k == 0 ? v1 : v2);
+    const float x = k == 0 ? b2Dot(along, d) : -b2Dot(along, d);
+    const float y = b2Dot(normal, d);
+    const float cos = static_cast<float>(code) / 127;
+    const float sin = std::sqrt(std::max(0.0f, 1 - cos * cos));
+    if (y > 0 && cos * y > sin * x) return true;
+  }
+  return false;
 }
 
 namespace {

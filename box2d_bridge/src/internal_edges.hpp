@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "dyop/box2d.hpp"
 #include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
 
@@ -97,19 +98,11 @@ PolygonEdgeData polygon_edge_data(const b2Fixture& fixture);
 // Nothing for a body within the polygon's own corner.
 ShapeMasks junction_masks(const Junction& j, const b2PolygonShape& p, const b2Vec2& other);
 
-// What a two-sided edge fixture's ends meet: the outline of the group (its body's edges, chains and
-// polygons, and for a static body every static body's) through each end, seen from either side.
-struct EdgeEnds {
-  std::uint8_t neighbours = 0;    // bit k: end k (0 `m_vertex1`, 1 `m_vertex2`) meets the group
-  std::uint8_t closed_front = 0;  // bit k: from the front, the outline at end k is flat or reflex
-  std::uint8_t closed_back = 0;   // bit k: the same from the back
-};
-
 // The masks (`Segment`'s bits) of a two-sided edge for a body on its front (`back` false) or its
 // back: nothing when its ends meet nothing (both sides, as Box2D's), else its other side internal
 // and its ends closed as seen from the body's side.
 inline ShapeMasks side_masks(EdgeEnds ends, bool back) {
-  if (ends.neighbours == 0) return {};
+  if (ends.neighbours() == 0) return {};
   return {static_cast<std::uint8_t>(back ? 0b01 : 0b10),
           back ? ends.closed_back : ends.closed_front};
 }
@@ -118,8 +111,15 @@ inline ShapeMasks side_masks(EdgeEnds ends, bool back) {
 // edges, chain edges and polygon edges that end at it or pass through it (points one within the
 // tolerance of `polygon_internal_edges`); from each side, the first ray met turning from the edge
 // toward that side bounds the free space there, and the end is closed when that space spans at
-// most a half-turn (flat within `flat_outline_sine`, or reflex). Found with one broad-phase query
-// per end (a walk of a non-static body's fixtures).
+// most a half-turn (flat within `flat_outline_sine`, or reflex), a corner when less
+// (`EdgeEnds::corner_cos`). Found with one broad-phase query per end (a walk of a non-static
+// body's fixtures).
 EdgeEnds edge_ends(const b2Fixture& fixture);
+
+// A body with centroid `c` (the edge's frame) and the two-sided edge `v1` → `v2` with ends `ends`,
+// the body on its back (`back`) or front: true when `c` lies on the body's side and beyond the
+// other edge of a corner at an end (`EdgeEnds::corner_cos`): that edge faces the body there.
+bool beyond_corner(const EdgeEnds& ends, const b2Vec2& v1, const b2Vec2& v2, bool back,
+                   const b2Vec2& c);
 
 }  // namespace dyop::box2d::detail

@@ -84,12 +84,12 @@ void look_at_edge(const b2EdgeShape& a, bool b_valid, const b2Vec2& centroid_b_i
     memory.shapes = invalid;
     return;
   }
-  const b2Vec2 along = a.m_vertex2 - a.m_vertex1;
-  const bool on_back = !a.m_oneSided && b2Cross(along, centroid_b_in_a - a.m_vertex1) > 0;
+  const bool on_back = !a.m_oneSided && on_back_of(a, centroid_b_in_a);
   memory.shapes = on_back ? back : front;
   // A one-sided edge's masks are its shape's, once (`EdgePair::take_masks`).
   const ShapeMasks m = a.m_oneSided ? one_sided_masks(a) : ShapeMasks{};
   memory.internal_edges = {m.edges, m.closed_vertices};
+  memory.edge_ends = {};  // not known yet (the contact's masks bring them)
 }
 
 }  // namespace
@@ -107,6 +107,28 @@ void look_at_shapes(const b2EdgeShape& a, const b2CircleShape& b, const b2Vec2& 
   const bool valid = Circle<float>::check(vec(b.m_p), b.m_radius) == ConvexError::None;
   look_at_edge(a, valid, centroid_b_in_a, b.m_radius, Shapes::EdgeAndCircle,
                Shapes::EdgeBackAndCircle, Shapes::InvalidEdgeAndCircle, memory);
+}
+
+void face_edge_side(ContactMemory& memory, bool back) {
+  using Shapes = ContactMemory::Shapes;
+  if (on_edge_back(memory.shapes) == back) return;
+  const bool circle =
+      memory.shapes == Shapes::EdgeAndCircle || memory.shapes == Shapes::EdgeBackAndCircle;
+  memory.shapes = circle ? (back ? Shapes::EdgeBackAndCircle : Shapes::EdgeAndCircle)
+                         : (back ? Shapes::EdgeBackAndPolygon : Shapes::EdgeAndPolygon);
+  if (memory.edge_ends.neighbours() == 0) return;
+  const ShapeMasks m = side_masks(memory.edge_ends, back);
+  memory.internal_edges = {m.edges, m.closed_vertices};
+}
+
+bool EdgePair::turned_away(const PairPose& pose, ContactMemory& memory) const {
+  const b2Vec2 along = a.m_vertex2 - a.m_vertex1;
+  const b2Vec2 offset = pose.centroid_b_in_a - a.m_vertex1;
+  const float side = b2Cross(along, offset);  // > 0: the back
+  const float t = b2Dot(along, offset);
+  if (side != 0 && (t < 0 || t > b2Dot(along, along))) face_edge_side(memory, side > 0);
+  return beyond_corner(memory.edge_ends, a.m_vertex1, a.m_vertex2, on_edge_back(memory.shapes),
+                       pose.centroid_b_in_a);
 }
 
 ShapeMasks one_sided_masks(const b2EdgeShape& edge) {

@@ -53,6 +53,16 @@ inline bool on_edge_back(ContactMemory::Shapes shapes) {
          shapes == ContactMemory::Shapes::EdgeBackAndCircle;
 }
 
+// A two-sided edge's pair (`memory`) on the edge's back (`back`) or front from now on, its masks
+// with it where the edge's ends are known (`ContactMemory::edge_ends`).
+void face_edge_side(ContactMemory& memory, bool back);
+
+// True when `c` (the edge's frame) lies behind the front of two-sided edge `edge`, as the first
+// look at the pair decides its side.
+inline bool on_back_of(const b2EdgeShape& edge, const b2Vec2& c) {
+  return b2Cross(edge.m_vertex2 - edge.m_vertex1, c - edge.m_vertex1) > 0;
+}
+
 // What the first look at two polygons finds (their `Shapes` and bounding radii, kept in
 // `memory`: the shapes of a fixture never change). Triangles are validated later, by the first
 // answer that runs the method (`TrianglePair::accepted`): most contacts a broad phase makes never
@@ -195,8 +205,10 @@ struct TrianglePair {
   static bool any_masks(const Query& q) { return q.internal_edges.any(); }
   b2Vec2 centroid_a() const { return a.m_centroid; }
   int count_a() const { return 3; }
-  // Box2D's rules exclude no pair of polygons (see `EdgePair::excluded`).
+  // Box2D's rules exclude no pair of polygons (see `EdgePair::excluded`), nor does a face of
+  // another shape face B instead (see `EdgePair::faces_away`).
   static std::optional<float> excluded(const PairPose&) { return std::nullopt; }
+  static bool faces_away(const PairPose&, ContactMemory&) { return false; }
   Result<float> solve(const Setting& setting, const Query& q, const PairPose& pose,
                       ContactMemory& memory) const;
   void write(b2Manifold* manifold, const Manifold<float>& m, const PairPose& pose) const;
@@ -233,6 +245,7 @@ struct ExactPair {
     q.masks_b = memory.masks_b;
   }
   static bool any_masks(const Query& q) { return q.masks_a.any() || q.masks_b.any(); }
+  static bool faces_away(const PairPose&, ContactMemory&) { return false; }
 };
 
 // What the polygon families beyond two triangles share: A is a polygon.
@@ -355,6 +368,11 @@ struct EdgePair : ExactPair {
   const b2EdgeShape& a;
   const b2Transform& xf_a;
 
+  // The ground's face stays the reference unless B's beats it by Box2D's own hysteresis, as on a
+  // triangulated ground: a body resting over an edge's end, tilted a thousandth in its skins, would
+  // otherwise take its own tilted face's normal there, and slide off a flat top when frictionless.
+  static float hysteresis(const PairPose&) { return face_hysteresis; }
+
   EdgePair(const b2EdgeShape& edge, const b2Transform& xfa) : a(edge), xf_a(xfa) {}
   static bool solver_on(const Setting& setting) {
     return ExactPair::solver_on(setting) && setting.config.edges_and_chains;
@@ -375,6 +393,14 @@ struct EdgePair : ExactPair {
     const float distance = b2Dot(b2Vec2(along.y, -along.x), offset);
     return distance < 0.0f ? -distance : 0.0f;
   }
+  // With a two-sided edge's ends known (`ContactMemory::edge_ends`): B changes sides, its masks
+  // with it, once its centroid has gone around an end (to the other side of A's line, beyond that
+  // end); true when it lies beyond a corner's other edge (`beyond_corner`), which faces it there.
+  bool faces_away(const PairPose& pose, ContactMemory& memory) const {
+    if (a.m_oneSided || memory.edge_ends.neighbours() == 0) return false;
+    return turned_away(pose, memory);
+  }
+  bool turned_away(const PairPose& pose, ContactMemory& memory) const;
   // A's side `face`'s unit normal (0 the front, 1 the back), as the solver reads it.
   b2Vec2 side_normal(int face) const { return EdgeSides(a).normals[face]; }
   // The first vertex of A's side `face` (the front runs from `m_vertex1`, the back back to it).

@@ -232,6 +232,22 @@ inline constexpr int skip_count = 2;
 /// "bounds", "warm-axis".
 const char* name(Skip s);
 
+/// What a two-sided edge's ends meet, seen from either side (`edge_ends`,
+/// dyop/box2d_internal_edges.hpp): the outline of its group through each end (end 0 `m_vertex1`, 1
+/// `m_vertex2`; side 0 the front, right of `m_vertex1` → `m_vertex2`, 1 the back).
+/// Value-initialised (`{}`): an edge that meets nothing.
+struct EdgeEnds {
+  std::uint8_t closed_front;  ///< bit k: from the front, the outline at end k is flat or reflex
+  std::uint8_t closed_back;   ///< bit k: the same from the back
+  /// [end][side], at an end that meets the outline: where the free space beside the edge is a
+  /// corner narrower than a half-turn, the cosine of its angle in 127ths, rounded down (the corner
+  /// a little wider); −127 elsewhere. A body whose centroid lies beyond that corner's other edge
+  /// faces that other edge, not this one.
+  std::int8_t corner_cos[2][2];
+  /// Bit k: end k meets the outline (then it is closed from one side at least).
+  std::uint8_t neighbours() const { return static_cast<std::uint8_t>(closed_front | closed_back); }
+};
+
 /// What the plug-in remembers about one polygon pair between evaluations (16 bytes, inside each of
 /// its contacts, no heap). A caller of `collide_polygons` keeps one per pair; default: nothing
 /// known yet.
@@ -262,8 +278,16 @@ struct ContactMemory {
     EdgeBackAndCircle,      ///< a two-sided edge and a circle on its back
     InvalidEdgeAndCircle,   ///< an edge and a circle, one refused (`ConvexError`): Box2D
   };
-  /// The backend's warm-start state (`LinCanny`'s last features; `Config::lin_canny_cache`).
-  PairState warm_start;
+  union {
+    /// Triangle pairs: the backend's warm-start state (`LinCanny`'s last features;
+    /// `Config::lin_canny_cache`).
+    PairState warm_start{};
+    /// Two-sided edge pairs with the rule on: the edge's ends (`edge_ends`); a world's contact
+    /// finds them with its masks, a caller of `collide_edge_and_polygon` may set them. Where they
+    /// are known, a body that goes around an end changes sides, and one beyond a corner's other
+    /// edge gets no contact.
+    EdgeEnds edge_ends;
+  };
   /// The face the last evaluation judged the pair on: A's edges first (0 to A's vertex count − 1),
   /// then B's; -1 none yet (`Config::warm_axis`).
   std::int8_t last_face = -1;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "dyop/box2d.hpp"
 #include "dyop/convex_pair.hpp"
 #include "dyop/result.hpp"
 
@@ -86,6 +87,10 @@ std::optional<ShapeMasks> fixed_polygon_edges(const b2Fixture& fixture);
 ///   body's side spans at most a half-turn (flat or reflex).
 /// Empty for any other shape.
 ShapeMasks edge_internal_edges(const b2Fixture& fixture, int child = 0, bool back = false);
+
+/// What two-sided edge fixture `fixture`'s ends meet (its fixed edge data, else found now as
+/// `edge_internal_edges` finds them): for `ContactMemory::edge_ends`. Empty for any other shape.
+EdgeEnds edge_ends(const b2Fixture& fixture);
 
 /// `edge_internal_edges` of two-sided edge fixture `fixture` from its fixed edge data, or nothing:
 /// not a two-sided edge, or never fixed.
