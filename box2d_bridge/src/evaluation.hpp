@@ -27,11 +27,13 @@
 
 namespace dyop::box2d::detail {
 
-// True unless `r` (with `Apart::Gap`) is apart beyond `margin`: such an answer is the answer under
-// any masks (`Query::internal_edges`, `ConvexQuery`'s masks, `Apart::Gap`; tested over every input
-// class and edge mask in the library's `InternalEdgesRule` test), for every pair family.
+// True unless `r` (with `Apart::Gap`) is apart beyond `margin` with an empty manifold: such an
+// answer is the answer under any masks (`Query::internal_edges`, `ConvexQuery`'s masks,
+// `Apart::Gap`; tested over every input class and edge mask in the library's `InternalEdgesRule`
+// test), for every pair family. (The face hysteresis may keep a point on A's face while B's face
+// separates the pair beyond the margin: that point is the rule's to judge.)
 inline bool needs_masks(const Result<float>& r, float margin) {
-  return !(r.status == Status::Separated && r.separation > margin);
+  return !(r.status == Status::Separated && r.separation > margin && r.manifold.point_count == 0);
 }
 
 // True when a world's contact `contact` (the rule on) holds no masks that hold now under the
