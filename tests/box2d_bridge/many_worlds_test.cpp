@@ -41,10 +41,11 @@ constexpr int kSteps = 90;
 
 // Worlds that differ in kind: a resting structure, concave bodies of many triangles, a crowd
 // landing in a triangulated bin, sliders over internal edges, and the everyday shapes (`SetAsBox`
-// boxes, hexagons, circles) landing on a tile map of `SetAsBox` tiles.
-enum class Kind { Tower, Concave, Crowd, Sliders, Everyday };
-constexpr std::array<Kind, 5> kKinds = {Kind::Tower, Kind::Concave, Kind::Crowd, Kind::Sliders,
-                                        Kind::Everyday};
+// boxes, hexagons, circles) landing on a tile map of `SetAsBox` tiles, and on a level made the way
+// Box2D tells users to: a chain loop beside strips of two-sided edges across static bodies.
+enum class Kind { Tower, Concave, Crowd, Sliders, Everyday, Levels };
+constexpr std::array<Kind, 6> kKinds = {Kind::Tower,   Kind::Concave,  Kind::Crowd,
+                                        Kind::Sliders, Kind::Everyday, Kind::Levels};
 
 const char* kind_name(Kind kind) {
   switch (kind) {
@@ -58,8 +59,35 @@ const char* kind_name(Kind kind) {
       return "sliders";
     case Kind::Everyday:
       return "everyday";
+    case Kind::Levels:
+      return "levels";
   }
   return "?";
+}
+
+// 60 boxes, hexagons and circles dropped along [-9, 9] and pushed along +x.
+void add_everyday_bodies(World& world) {
+  for (int i = 0; i < 60; ++i) {
+    const float size = 0.15f + 0.05f * static_cast<float>(i % 3);
+    b2Body* body =
+        add_body(world, b2_dynamicBody,
+                 b2Vec2(-9.0f + 0.9f * static_cast<float>(i % 20), 0.5f + 0.9f * (i / 20)),
+                 0.37f * static_cast<float>(i));
+    b2PolygonShape polygon;
+    b2CircleShape circle;
+    if (i % 3 == 0) polygon.SetAsBox(size, 0.7f * size);
+    if (i % 3 == 1) {
+      b2Vec2 v[6];
+      for (int k = 0; k < 6; ++k) {
+        v[k].Set(size * std::cos(1.0471976f * k), size * std::sin(1.0471976f * k));
+      }
+      polygon.Set(v, 6);
+    }
+    circle.m_radius = size;
+    const b2Shape& shape = i % 3 == 2 ? static_cast<const b2Shape&>(circle) : polygon;
+    body->CreateFixture(&shape, 1.0f);
+    body->SetLinearVelocity(b2Vec2(1.0f + 0.1f * static_cast<float>(i % 7), 0.0f));
+  }
 }
 
 std::unique_ptr<World> build_world(Kind kind) {
@@ -115,27 +143,25 @@ std::unique_ptr<World> build_world(Kind kind) {
         tile.SetAsBox(0.25f, 0.25f, b2Vec2(-10.0f + 0.5f * static_cast<float>(i), -0.25f), 0.0f);
         ground->CreateFixture(&tile, 0.0f);
       }
-      for (int i = 0; i < 60; ++i) {
-        const float size = 0.15f + 0.05f * static_cast<float>(i % 3);
-        b2Body* body =
-            add_body(*world, b2_dynamicBody,
-                     b2Vec2(-9.0f + 0.9f * static_cast<float>(i % 20), 0.5f + 0.9f * (i / 20)),
-                     0.37f * static_cast<float>(i));
-        b2PolygonShape polygon;
-        b2CircleShape circle;
-        if (i % 3 == 0) polygon.SetAsBox(size, 0.7f * size);
-        if (i % 3 == 1) {
-          b2Vec2 v[6];
-          for (int k = 0; k < 6; ++k) {
-            v[k].Set(size * std::cos(1.0471976f * k), size * std::sin(1.0471976f * k));
-          }
-          polygon.Set(v, 6);
+      add_everyday_bodies(*world);
+      break;
+    }
+    case Kind::Levels: {  // the same bodies on a chain loop and two strips of two-sided edges
+      b2Body* chain_body = add_body(*world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+      const b2Vec2 block[] = {{-10, -1}, {-3, -1}, {-3, 0}, {-10, 0}};
+      b2ChainShape loop;
+      loop.CreateLoop(block, 4);
+      chain_body->CreateFixture(&loop, 0.0f);
+      for (int strip = 0; strip < 2; ++strip) {  // each on a static body of its own, end to end
+        b2Body* edges = add_body(*world, b2_staticBody, b2Vec2(0.0f, 0.0f));
+        for (int i = 0; i < 12; ++i) {
+          const float x = -3.0f + 3.0f * static_cast<float>(strip) + 0.25f * static_cast<float>(i);
+          b2EdgeShape e;
+          e.SetTwoSided(b2Vec2(x, 0.0f), b2Vec2(x + 0.25f, 0.0f));
+          edges->CreateFixture(&e, 0.0f);
         }
-        circle.m_radius = size;
-        const b2Shape& shape = i % 3 == 2 ? static_cast<const b2Shape&>(circle) : polygon;
-        body->CreateFixture(&shape, 1.0f);
-        body->SetLinearVelocity(b2Vec2(1.0f + 0.1f * static_cast<float>(i % 7), 0.0f));
       }
+      add_everyday_bodies(*world);
       break;
     }
   }
@@ -198,6 +224,15 @@ constexpr Pinned kPinned[] = {
     {"everyday", "via_plugin_sat", 0x0f124731a6f038f2ull},
     {"everyday", "via_plugin_epa", 0x0f124731a6f038f2ull},
     {"everyday", "via_plugin_box2d", 0xe23dd46f35c42a68ull},
+    // No triangle either; its chain and edge pairs are the exact solver's under every backend but
+    // `box2d` (`Config::edges_and_chains`).
+    {"levels", "box2d_own", 0xdb23f966650dc68full},
+    {"levels", "via_plugin_dyop", 0xd934a06400168220ull},
+    {"levels", "via_plugin_dyop_fast", 0xd934a06400168220ull},
+    {"levels", "via_plugin_lin_canny", 0xd934a06400168220ull},
+    {"levels", "via_plugin_sat", 0xd934a06400168220ull},
+    {"levels", "via_plugin_epa", 0xd934a06400168220ull},
+    {"levels", "via_plugin_box2d", 0xdb23f966650dc68full},
 };
 
 std::uint64_t pinned(Kind kind, const Contact& contact) {
