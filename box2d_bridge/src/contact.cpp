@@ -125,6 +125,7 @@ b2Contact* Contact::create(b2Fixture* fixture_a, int32 index_a, b2Fixture* fixtu
   void* memory = allocator->Allocate(sizeof(Contact));
   b2Contact* contact = new (memory) Contact(fixture_a, index_a, fixture_b, index_b);
   fixtures_changed_near(*contact);
+  counters().contacts.add();
   return contact;
 }
 

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <type_traits>
 
 #include "dyop/box2d.hpp"
 #include "found_masks.hpp"
@@ -128,7 +129,13 @@ template <class Pair>
       recycling->lose_pose();
     }
   }
-  Pair::count_skip(counters(), setting, memory, *reason);
+  if constexpr (std::is_base_of_v<ExactPair, Pair>) {
+    ThreadCounters& count = counters();
+    Pair::count(count, setting, memory);
+    ExactPair::count_skip_reason(count, *reason);
+  } else {
+    Pair::count_skip(counters(), setting, memory, *reason);
+  }
   return true;
 }
 

@@ -246,6 +246,10 @@ struct ExactPair {
   }
   static bool any_masks(const Query& q) { return q.masks_a.any() || q.masks_b.any(); }
   static bool faces_away(const PairPose&, ContactMemory&) { return false; }
+  // A skip's reason, counted beside the skipped evaluation (the family's `count`).
+  static void count_skip_reason(ThreadCounters& to, Skip why) {
+    to.other_skipped[static_cast<int>(why)].add();
+  }
 };
 
 // What the polygon families beyond two triangles share: A is a polygon.
@@ -284,10 +288,6 @@ struct PolygonPair : PolygonAPair {
   static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
     to.polygon_pairs.add();
     if (solver_on(setting) && accepted(memory)) to.exact_pairs.add();
-  }
-  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
-                         Skip) {
-    count(to, setting, memory);
   }
 };
 
@@ -355,10 +355,6 @@ struct PolygonCirclePair : PolygonAPair {
     to.circle_pairs.add();
     if (solver_on(setting) && accepted(memory)) to.exact_pairs.add();
   }
-  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
-                         Skip) {
-    count(to, setting, memory);
-  }
 };
 
 // What the edge families share: A is an edge (a `b2EdgeShape`, or a chain's child edge made for
@@ -413,10 +409,6 @@ struct EdgePair : ExactPair {
   static void count(ThreadCounters& to, const Setting& setting, const ContactMemory& memory) {
     to.edge_pairs.add();
     if (solver_on(setting) && accepted_shapes(memory)) to.exact_pairs.add();
-  }
-  static void count_skip(ThreadCounters& to, const Setting& setting, const ContactMemory& memory,
-                         Skip) {
-    count(to, setting, memory);
   }
   static bool accepted_shapes(const ContactMemory& memory) {
     using Shapes = ContactMemory::Shapes;

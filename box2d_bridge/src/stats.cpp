@@ -24,8 +24,10 @@ void add_to(Stats& to, const ThreadCounters& from) {
   to.exact_pairs += from.exact_pairs.get();
   to.manifolds += from.manifolds.get();
   to.fallbacks += from.fallbacks.get();
+  for (int s = 0; s < skip_count; ++s) to.skipped[s] += from.other_skipped[s].get();
   to.internal_edge_pairs += from.internal_edge_pairs.get();
   to.recycled += from.recycled.get();
+  to.contacts += from.contacts.get();
 }
 
 void clear(ThreadCounters& c) {
@@ -39,8 +41,10 @@ void clear(ThreadCounters& c) {
   for (auto& by_kind : c.skipped) {
     for (Counter& x : by_kind) x.clear();
   }
+  for (Counter& x : c.other_skipped) x.clear();
   c.internal_edge_pairs.clear();
   c.recycled.clear();
+  c.contacts.clear();
 }
 
 // The blocks of the live threads and the totals of the ended ones. Touched when a thread first

@@ -41,9 +41,11 @@ struct ThreadCounters {
   Counter exact_pairs;
   Counter manifolds;
   Counter fallbacks;
-  std::array<std::array<Counter, skip_count>, backend_count> skipped;
+  std::array<std::array<Counter, skip_count>, backend_count> skipped;  // triangle pairs
+  std::array<Counter, skip_count> other_skipped;  // the other families (also in their count)
   Counter internal_edge_pairs;
   Counter recycled;
+  Counter contacts;
 
   ThreadCounters();   // registers the block (see stats.cpp)
   ~ThreadCounters();  // adds it to the ended threads' totals and unregisters it

@@ -14,8 +14,16 @@ InWorldSide side_of(const std::vector<scenes::SceneMetrics>& runs) {
     toi.push_back(m.solve_toi_ms_total);
     step_median.push_back(m.step_ms_median);
   }
-  return {scenes::median(collide), scenes::median(step), scenes::median(toi),
-          scenes::median(step_median), runs.front().contact_updates};
+  InWorldSide side{scenes::median(collide), scenes::median(step), scenes::median(toi),
+                   scenes::median(step_median), runs.front().contact_updates};
+  const scenes::SceneMetrics& first = runs.front();
+  side.contacts_made = first.contacts_made.value_or(0);
+  side.kept = first.recycled.value_or(0);
+  if (first.skips) {
+    for (const std::uint64_t n : *first.skips) side.skipped += n;
+  }
+  side.answered = first.answered.value_or(0);
+  return side;
 }
 
 }  // namespace

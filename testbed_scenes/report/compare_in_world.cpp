@@ -29,7 +29,11 @@ Records in_world_records(const std::vector<InWorldRatio>& rows) {
                {"step_ms_median_own", "", "", 10, where::files},
                {"step_ms_median", "", "", 10, where::files},
                {"contact_updates_own", "contact updates own", "updates_own", 11},
-               {"contact_updates", "contact updates, plug-in", "updates", 10}});
+               {"contact_updates", "contact updates, plug-in", "updates", 10},
+               {"contacts_made", "plug-in: contacts made", "made", 9},
+               {"kept", "kept", "kept", 9},
+               {"skipped", "skipped", "skipped", 9},
+               {"answered", "answered afresh", "answered", 9}});
   for (const InWorldRatio& r : rows) {
     out.add({Value::text(r.scene), Value::text(box2d::name(r.backend)), Value::count(r.steps),
              Value::count(r.repetitions), Value::number(r.own.narrowphase_ms, "%.2f"),
@@ -39,7 +43,11 @@ Records in_world_records(const std::vector<InWorldRatio>& rows) {
              Value::number(r.own.step_ms_median, "%.3f"),
              Value::number(r.plugin.step_ms_median, "%.3f"),
              Value::count(static_cast<std::int64_t>(r.own.contact_updates)),
-             Value::count(static_cast<std::int64_t>(r.plugin.contact_updates))});
+             Value::count(static_cast<std::int64_t>(r.plugin.contact_updates)),
+             Value::count(static_cast<std::int64_t>(r.plugin.contacts_made)),
+             Value::count(static_cast<std::int64_t>(r.plugin.kept)),
+             Value::count(static_cast<std::int64_t>(r.plugin.skipped)),
+             Value::count(static_cast<std::int64_t>(r.plugin.answered))});
   }
   return out;
 }
@@ -137,7 +145,9 @@ void InWorldSection::write_markdown(std::ostream& o, const Charts& charts) const
        "same steps: the solver and the time-of-impact pass included). **× own** is the "
        "backend's figure over Box2D's own: below 1 the plug-in is faster. The worlds evolve "
        "alike but not bit for bit (`box2d` excepted), so each side's contact updates are "
-       "given. Machine: "
+       "given, and the plug-in's evaluations over its whole first run by kind: contacts made, "
+       "evaluations that kept the manifold, skipped, and answered afresh (what costs). "
+       "Machine: "
     << std::thread::hardware_concurrency()
     << " hardware threads; ratios move between machines of one kind, name the machine with "
        "them.\n\n";

@@ -80,9 +80,9 @@ struct SceneMetrics {
   /// Every contact update in the measured steps, whatever the shapes (= `triangle_pairs` but in
   /// `mixed`, where circles, boxes and edges have contacts of their own).
   std::uint64_t contact_updates = 0;
-  /// Box2D scenes: pairs the plug-in's contacts evaluated in all (`stats()`: triangle pairs, other
-  /// polygon pairs, polygon–circle pairs), step 1 and the re-evaluations of Box2D's
-  /// time-of-impact sub-steps included. None for `paper`.
+  /// Box2D scenes: pairs the plug-in's contacts evaluated in all (`stats().evaluations()`: every
+  /// family), step 1 and the re-evaluations of Box2D's time-of-impact sub-steps included. None
+  /// for `paper`.
   std::optional<std::uint64_t> plugin_evaluations;
   /// Box2D scenes: pairs the backend could not answer, answered by Box2D instead (`stats()`);
   /// 0 means every triangle pair was the backend's. None for `paper`.
@@ -90,7 +90,7 @@ struct SceneMetrics {
   /// Box2D scenes: the narrow-phase work the world was allowed to skip (`--skip`). None for
   /// `paper`, which has no Box2D world.
   std::optional<box2d::Config> skip_config;
-  /// Box2D scenes: triangle-pair evaluations answered without running the backend, per reason
+  /// Box2D scenes: evaluations of every family answered without running the backend, per reason
   /// (index: `static_cast<int>(box2d::Skip)`), over the whole run like `plugin_evaluations`, of
   /// which they are a part (`stats().skipped`). None for `paper`.
   std::optional<std::array<std::uint64_t, box2d::skip_count>> skips;
@@ -98,6 +98,12 @@ struct SceneMetrics {
   /// (`box2d::Config::recycle_distance`, in `skip_config`), over the whole run, of
   /// `plugin_evaluations` (`stats().recycled`). None for `paper`.
   std::optional<std::uint64_t> recycled;
+  /// Box2D scenes: contacts the plug-in made (`stats().contacts`), over the whole run. None for
+  /// `paper`.
+  std::optional<std::uint64_t> contacts_made;
+  /// Box2D scenes: of `plugin_evaluations`, those answered afresh: neither kept (`recycled`) nor
+  /// skipped (`stats().answered()`). None for `paper`.
+  std::optional<std::uint64_t> answered;
   double step_ms_median = 0;  ///< median over the steps of the wall time of one step (ms)
   /// Wall time of all the measured steps together (ms): Box2D scenes, `b2World::Step` in steps
   /// 2..N (what a user of the world waits for); paper, the runner's calls.

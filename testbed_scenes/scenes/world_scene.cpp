@@ -132,11 +132,13 @@ SceneMetrics WorldScene::metrics() const {
   m.contact_updates = updates_.contacts;
   if (runner_) {  // the plug-in's counters mean nothing when Box2D's own contact answers
     const box2d::Stats s = box2d::stats();
-    m.plugin_evaluations = s.triangles(*runner_) + s.polygon_pairs + s.circle_pairs;
+    m.plugin_evaluations = s.evaluations();
     m.fallbacks = s.fallbacks;
     m.skip_config = skips_;
     m.skips = s.skipped;
     m.recycled = s.recycled;
+    m.contacts_made = s.contacts;
+    m.answered = s.answered();
   }
   m.step_ms_median = median(step_ms_);
   m.step_ms_total = step_ms_measured_;

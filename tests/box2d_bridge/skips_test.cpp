@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -112,6 +113,62 @@ TEST_P(Skips, EachSkipAloneGivesTheBitIdenticalWorld) {
 INSTANTIATE_TEST_SUITE_P(ExactBackends, Skips,
                          ::testing::Values(Backend::Dyop, Backend::Sat, Backend::Box2D),
                          [](const auto& info) { return std::string(name(info.param)); });
+
+// Boxes, hexagons and balls poured onto a chain (no triangle pair): every family's evaluations
+// split into kept, skipped (per reason) and answered afresh, and every contact the plug-in made is
+// counted, as Box2D's contact list sees them.
+TEST(StatsOfEveryFamily, EvaluationsSplitIntoKeptSkippedAndAnsweredAndContactsAreCounted) {
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  std::uint64_t made = 0;
+  {
+    worlds::World world;
+    b2Body* ground = worlds::add_body(world, b2_staticBody, b2Vec2(0, 0));
+    const b2Vec2 v[] = {{10, 0}, {-10, 0}};
+    b2ChainShape chain;
+    chain.CreateChain(v, 2, b2Vec2(12, 0), b2Vec2(-12, 0));
+    ground->CreateFixture(&chain, 0);
+    for (int i = 0; i < 60; ++i) {
+      b2Body* body = worlds::add_body(world, b2_dynamicBody,
+                                      b2Vec2(-5.0f + 0.5f * static_cast<float>(i % 20),
+                                             1.0f + 0.6f * static_cast<float>(i / 20)));
+      b2PolygonShape box;
+      box.SetAsBox(0.25f, 0.2f);
+      b2CircleShape ball;
+      ball.m_radius = 0.25f;
+      body->CreateFixture(i % 2 == 0 ? static_cast<const b2Shape*>(&box) : &ball, 1.0f);
+    }
+    // The plug-in's contacts that appear in the world's list from one step to the next (a
+    // contact destroyed and another made at its address within one step is seen once).
+    std::set<const b2Contact*> before;
+    for (int step = 0; step < 120; ++step) {
+      world.step();
+      std::set<const b2Contact*> now;
+      for (const b2Contact* c = world->GetContactList(); c; c = c->GetNext()) {
+        if (c->GetFixtureA()->GetType() == b2Shape::e_circle &&
+            c->GetFixtureB()->GetType() == b2Shape::e_circle) {
+          continue;  // Box2D's own
+        }
+        now.insert(c);
+        made += before.count(c) == 0 ? 1 : 0;
+      }
+      before = std::move(now);
+    }
+  }
+  const Stats s = stats();
+  EXPECT_EQ(s.triangles(Backend::Dyop), 0u);
+  EXPECT_GT(s.polygon_pairs, 0u);
+  EXPECT_GT(s.circle_pairs, 0u);
+  EXPECT_GT(s.edge_pairs, 0u);
+  EXPECT_GT(s.skips(Skip::Bounds), 0u);
+  EXPECT_GT(s.recycled, 0u);
+  EXPECT_EQ(s.evaluations(), s.polygon_pairs + s.circle_pairs + s.edge_pairs);
+  EXPECT_EQ(s.answered() + s.recycled + s.skips(Skip::Bounds) + s.skips(Skip::WarmAxis),
+            s.evaluations());
+  EXPECT_GT(s.answered(), 0u);
+  EXPECT_GT(made, 0u);
+  EXPECT_GE(s.contacts, made);
+  ASSERT_TRUE(uninstall().ok());
+}
 
 }  // namespace
 }  // namespace dyop::box2d

@@ -391,9 +391,9 @@ struct Stats {
   /// function instead so that the simulation goes on. Nonzero means the figures include Box2D's
   /// answers.
   std::uint64_t fallbacks = 0;
-  /// Triangle-pair evaluations answered without running the backend, per reason (index:
-  /// `static_cast<int>(Skip)`); they are included in `triangle_pairs`. The other families skip
-  /// too, counted in their own counts (`polygon_pairs`, `circle_pairs`, `edge_pairs`) only.
+  /// Evaluations of every family answered without running the backend or the solver, per reason
+  /// (index: `static_cast<int>(Skip)`); included in their family's count (`triangle_pairs`,
+  /// `polygon_pairs`, `circle_pairs`, `edge_pairs`).
   std::array<std::uint64_t, skip_count> skipped{};
   /// Evaluations of any family run by an exact solver with internal edges or closed vertices in
   /// force (`Config::internal_edges`): the pairs whose contact the rule may change.
@@ -401,6 +401,20 @@ struct Stats {
   /// Evaluations of any family that kept the contact's manifold (`Config::recycle_distance`);
   /// included in their family's count.
   std::uint64_t recycled = 0;
+  /// Contacts the plug-in made (Box2D asks for one when two fixtures' boxes start to overlap).
+  std::uint64_t contacts = 0;
+  /// Evaluations of every family: the pairs the plug-in's contacts and entry points evaluated.
+  std::uint64_t evaluations() const {
+    std::uint64_t n = polygon_pairs + circle_pairs + edge_pairs;
+    for (const std::uint64_t t : triangle_pairs) n += t;
+    return n;
+  }
+  /// Evaluations answered afresh: neither kept (`recycled`) nor skipped.
+  std::uint64_t answered() const {
+    std::uint64_t n = evaluations() - recycled;
+    for (const std::uint64_t k : skipped) n -= k;
+    return n;
+  }
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }
   /// Evaluations skipped for reason `s`.
