@@ -257,11 +257,12 @@ namespace {
 // Whether polygon fixture `fixture`'s masks against `other` need no finding, and which: its fixed
 // edge data, or none for a polygon alone on a non-static body (its own outline); nothing when they
 // must be found.
-std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture, const b2Fixture& other) {
+std::optional<ShapeMasks> masks_without_finding(const b2Fixture& fixture, const b2Fixture& other,
+                                                bool* junction = nullptr) {
   const b2Body& body = *fixture.GetBody();
   const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
   if (alone && body.GetType() != b2_staticBody) return ShapeMasks{};
-  return fixed_masks_facing(fixture, other);
+  return fixed_masks_facing(fixture, other, junction);
 }
 
 // The masks polygon fixture `fixture`'s pairs with `other` read: its fixed edge data, else found
@@ -273,19 +274,19 @@ ShapeMasks masks_of(const b2Fixture& fixture, const b2Fixture& other) {
 
 }  // namespace
 
-bool Contact::fixed_masks(ContactMemory& memory) const {
+bool Contact::fixed_masks(ContactMemory& memory, bool* junction) const {
   const Family family = family_of(memory.shapes);
   if (family == Family::Triangles) {
-    const std::optional<InternalEdges> fixed = fixed_internal_edges();
+    const std::optional<InternalEdges> fixed = fixed_internal_edges(junction);
     if (fixed) memory.internal_edges = *fixed;
     return fixed.has_value();
   }
   if (family == Family::Polygons || family == Family::PolygonAndCircle) {
-    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB);
+    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB, junction);
     if (!a) return false;
     const bool b_has_edges = family == Family::Polygons;
     const std::optional<ShapeMasks> b =
-        b_has_edges ? fixed_masks_facing(*m_fixtureB, *m_fixtureA) : ShapeMasks{};
+        b_has_edges ? fixed_masks_facing(*m_fixtureB, *m_fixtureA, junction) : ShapeMasks{};
     if (!b) return false;
     memory.internal_edges = {a->edges, a->closed_vertices};
     memory.masks_b = *b;
@@ -293,9 +294,9 @@ bool Contact::fixed_masks(ContactMemory& memory) const {
   }
   // An edge: a one-sided edge's masks are its ghost vertices' (in `memory` since the first look at
   // the shapes), a two-sided edge's its fixed ends on B's side; B's its own.
-  const std::optional<ShapeMasks> b = family == Family::EdgeAndPolygon
-                                          ? masks_without_finding(*m_fixtureB, *m_fixtureA)
-                                          : ShapeMasks{};
+  const std::optional<ShapeMasks> b =
+      family == Family::EdgeAndPolygon ? masks_without_finding(*m_fixtureB, *m_fixtureA, junction)
+                                       : ShapeMasks{};
   if (!b) return false;
   if (two_sided_edge(*m_fixtureA)) {
     const std::optional<EdgeEnds> ends = fixed_edge_ends(*m_fixtureA);

@@ -52,11 +52,13 @@ inline ShapeMasks masks_facing(const PolygonEdgeData& data, const b2Fixture& fix
 }
 
 // The fixed masks of polygon fixture `fixture` against the body of `other` (`masks_facing`), or
-// nothing: never fixed.
+// nothing: never fixed. `junction`, if given, is set when they depend on where that body is.
 inline std::optional<ShapeMasks> fixed_masks_facing(const b2Fixture& fixture,
-                                                    const b2Fixture& other) {
+                                                    const b2Fixture& other,
+                                                    bool* junction = nullptr) {
   const std::optional<PolygonEdgeData> record = fixed_polygon_record(fixture);
   if (!record) return std::nullopt;
+  if (junction && record->junction.vertex != Junction::none) *junction = true;
   return masks_facing(*record, fixture, other);
 }
 
@@ -78,15 +80,17 @@ class Contact final : public b2Contact {
   // The plug-in's contact `c` is, or nullptr (Box2D's own, made before an install).
   static Contact* ours(b2Contact* c);
 
-  // What its internal-edge masks would be found under now (`FoundMasks::stamp`): install `epoch`
-  // and the frames of its static bodies, never 0 nor `FoundMasks::fixed_stamp`. Why a static body's
+  // What its internal-edge masks would be found under now (`FoundMasks::stamp`): install `epoch`,
+  // the count of fixed records written (a fixture of it may have been fixed since: its fixed data
+  // then decides, `fixed_masks`) and the frames of its static bodies, never 0 nor
+  // `FoundMasks::fixed_stamp`. Why a static body's
   // frame: static bodies share edges with each other, so moving one (`SetTransform`) or making it
   // static or not (`SetType`) changes its triangles' masks, and nothing else in the world records a
   // move within the broad phase's margin. Folded with the install so that a change of either gives
   // another stamp (short of a 16-bit collision). Inline: every evaluation with the rule on that
   // keeps a manifold or answers afresh asks.
   std::uint16_t internal_edges_stamp(std::uint8_t epoch) const {
-    std::uint32_t h = epoch;
+    std::uint32_t h = epoch ^ (fixed_records_written.load(std::memory_order_relaxed) << 8);
     h = fold_static_frame(h, *m_fixtureA->GetBody());
     h = fold_static_frame(h, *m_fixtureB->GetBody());
     const auto stamp = static_cast<std::uint16_t>(h ^ (h >> 16));
@@ -146,10 +150,10 @@ class Contact final : public b2Contact {
   // Its pair's masks from the fixed edge data of its two fixtures (`fix_internal_edges`), when
   // both have it: then nothing is found, stamped or followed for the pair. For a pair of
   // triangles (`ContactMemory::Shapes`).
-  std::optional<InternalEdges> fixed_internal_edges() const {
-    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB);
+  std::optional<InternalEdges> fixed_internal_edges(bool* junction = nullptr) const {
+    const std::optional<ShapeMasks> a = fixed_masks_facing(*m_fixtureA, *m_fixtureB, junction);
     if (!a) return std::nullopt;
-    const std::optional<ShapeMasks> b = fixed_masks_facing(*m_fixtureB, *m_fixtureA);
+    const std::optional<ShapeMasks> b = fixed_masks_facing(*m_fixtureB, *m_fixtureA, junction);
     if (!b) return std::nullopt;
     return InternalEdges::pair({a->edges, a->closed_vertices}, {b->edges, b->closed_vertices});
   }
@@ -157,8 +161,9 @@ class Contact final : public b2Contact {
   // Its pair's masks, for the pair's family (`memory.shapes`), into `memory` when nothing need be
   // found: each fixture's fixed edge data (`fix_internal_edges`), a one-sided edge's own (its
   // ghost vertices, read by the family), a circle's none; false (nothing written) otherwise.
-  // Every answer with the rule on asks.
-  bool fixed_masks(ContactMemory& memory) const;
+  // Every answer with the rule on asks, unless the masks it read last still hold. `junction` is
+  // set when they depend on where the bodies are (a polygon's junction with two-sided edges).
+  bool fixed_masks(ContactMemory& memory, bool* junction) const;
   // Its pair's masks found now (`masks`: what it found before, under install `epoch`) into
   // `memory`: a triangle pair's by `find_internal_edges`, others fixture by fixture.
   void find_masks(const FoundMasks& masks, std::uint8_t epoch, ContactMemory& memory) const;

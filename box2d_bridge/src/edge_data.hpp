@@ -13,6 +13,7 @@
 #include <box2d/b2_polygon_shape.h>
 #include <box2d/b2_world.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -145,8 +146,20 @@ inline bool holds_edge_data(const b2Fixture& fixture) {
          static_cast<const b2PolygonShape*>(fixture.GetShape())->m_count <= max_fixed_vertices;
 }
 
+// How many fixed records were written, process-wide (every world's): a contact whose masks were
+// found under a count knows that no fixture of it has been fixed since (`internal_edges_stamp`).
+// Written between steps only (`fix_internal_edges`, `refresh_internal_edges`, `add_triangles`),
+// read by every evaluation that answers afresh with the rule, on any thread.
+inline std::atomic<std::uint32_t> fixed_records_written{0};
+
+// `fixed_records_written`'s low 16 bits (`FoundMasks::fixed_since`).
+inline std::uint16_t fixed_records_stamp() {
+  return static_cast<std::uint16_t>(fixed_records_written.load(std::memory_order_relaxed));
+}
+
 // Writes `data` as the fixed edge data of polygon fixture `fixture` (`holds_edge_data`).
 inline void write_fixed_edges(b2Fixture& fixture, const PolygonEdgeData& data) {
+  fixed_records_written.fetch_add(1, std::memory_order_relaxed);
   auto& polygon = *static_cast<b2PolygonShape*>(fixture.GetShape());
   EdgeRecord r;
   r.key = edge_record_key(fixture);
@@ -191,6 +204,7 @@ inline std::optional<EdgeEnds> fixed_edge_ends(const b2Fixture& fixture) {
 
 // Writes `ends` as the fixed edge data of two-sided edge fixture `fixture`.
 inline void write_fixed_edge_ends(b2Fixture& fixture, EdgeEnds ends) {
+  fixed_records_written.fetch_add(1, std::memory_order_relaxed);
   auto& edge = *static_cast<b2EdgeShape*>(fixture.GetShape());
   const std::uint64_t key = edge_ends_key(fixture);
   std::memcpy(static_cast<void*>(&edge.m_vertex0), &key, sizeof key);

@@ -157,16 +157,28 @@ template <class Pair>
   q.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   q.witnesses = false;   // Box2D's solver reads the manifold alone
   bool put_off = false;
-  if (Pair::rule(setting)) {
-    if (contact && contact->fixed_masks(memory)) {
-      masks->stamp = FoundMasks::fixed_stamp;
-    } else if (contact) {
-      put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
+  if (Pair::rule(setting) && contact) {
+    // Fixed masks read since the last record was written, free of the poses, hold as they are;
+    // masks found under the stamp the contact has now were found since too: no fixture of the
+    // pair was fixed since. Else its fixed data first, then the masks it finds.
+    const std::uint16_t records = fixed_records_stamp();
+    if (!masks->fixed_since(records)) {
+      const bool found_since =
+          masks->found() && masks->stamp == contact->internal_edges_stamp(setting.epoch);
+      bool junction = false;
+      if (!found_since && contact->fixed_masks(memory, &junction)) {
+        masks->fixed_now(records, junction);
+      } else {
+        put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
+      }
     }
     if (!put_off) {
       if (pair.faces_away(pose, memory)) return std::nullopt;
       pair.take_masks(q, memory);
     }
+  } else if (Pair::rule(setting)) {
+    if (pair.faces_away(pose, memory)) return std::nullopt;
+    pair.take_masks(q, memory);
   }
   Result<float> r = pair.solve(setting, q, pose, memory);
   if (put_off && needs_masks(r, q.margin)) {

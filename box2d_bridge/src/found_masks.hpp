@@ -28,10 +28,22 @@ struct FoundMasks {
   // What the masks hold under: 0 none (never seen, or forgotten); `fixed_stamp`; else the install
   // and the frames of the pair's static bodies, folded (`Contact::internal_edges_stamp`).
   std::uint16_t stamp = 0;
-  // The world's count of fixture proxies (low 16 bits) when the masks were found.
+  // The world's count of fixture proxies (low 16 bits) when the masks were found; for fixed
+  // masks, the count of fixed records written then (`fixed_since`).
   std::uint16_t fixtures = 0;
 
   bool fixed() const { return stamp == fixed_stamp; }
+  // Fixed masks read when the process had written `records` fixed records (low 16 bits, in
+  // `fixtures`) and free of the bodies' poses (`motion` 0): they hold, nothing need be read.
+  bool fixed_since(std::uint16_t records) const {
+    return stamp == fixed_stamp && motion == 0 && fixtures == records;
+  }
+  // Fixed masks just read under `records`; `junction`: they depend on the bodies' poses.
+  void fixed_now(std::uint16_t records, bool junction) {
+    stamp = fixed_stamp;
+    fixtures = records;
+    motion = junction ? not_found : 0;
+  }
   // Found under `stamp` and still holding (settled, or followed since the count moved).
   bool found() const { return motion != not_found; }
   // Found under `stamp` and not moved since the world's fixture count did: lent to the pair's
