@@ -26,6 +26,7 @@ WorldBuild build_mixed(World& world, workloads::Random& rng);
 WorldBuild build_slide(World& world, workloads::Random& rng);
 WorldBuild build_tiles(World& world, workloads::Random& rng);
 WorldBuild build_tile_map(World& world, workloads::Random& rng);
+WorldBuild build_tile_map_unfixed(World& world, workloads::Random& rng);
 WorldBuild build_crowd(World& world, workloads::Random& rng);
 
 /// The builder of the catalogue's Box2D scene `name`, or nullptr (unknown, or `paper`, which has

@@ -72,6 +72,11 @@ const std::vector<Entry>& entries() {
         "tiles as bodies, 60 triangles of debris falling onto a fifth",
         360, 300, 300},
        detail::build_tile_map},
+      {{"tile-map-unfixed",
+        "the tile map of tile-map as most loaders bring it over: edge data never fixed "
+        "(fix_internal_edges not called), every contact finds its masks",
+        360, 300, 300},
+       detail::build_tile_map_unfixed},
   };
   return list;
 }

@@ -37,8 +37,7 @@ WorldScene::WorldScene(std::string name, const Runner& runner, std::uint64_t see
       world_(std::make_unique<World>()) {
   workloads::Random rng(seed);
   build_ = build(*world_, rng);
-  // The ground's and the bodies' edge data fixed once they are built, as a level loader would.
-  box2d::fix_internal_edges(world_->get());
+  if (build_.fix_edge_data) box2d::fix_internal_edges(world_->get());
   for (const Slider& s : build_.sliders) slider_start_x_.push_back(s.body->GetPosition().x);
   // Box2D's own contact answers as `b2CollidePolygons`, which is what the probe checks for `box2d`.
   probe_ = std::make_unique<ContactProbe>(runner.value_or(box2d::Backend::Box2D));

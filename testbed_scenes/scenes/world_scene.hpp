@@ -43,6 +43,9 @@ struct WorldBuild {
   /// Called before each step with the number of steps done, untimed (scene `tiles`: a ground whose
   /// tiles are added and removed under the sliders); empty: nothing.
   std::function<void(int steps_done)> before_step;
+  /// True: the ground's and the bodies' edge data are fixed once built, as a level loader that
+  /// calls `fix_internal_edges` does; false: never, every contact finds its masks itself.
+  bool fix_edge_data = true;
 };
 
 /// Steps a structure is given to settle before its top bodies are watched (1 s): a pyramid of
