@@ -146,6 +146,16 @@ template <class Pair>
 // nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
 // `FoundMasks::motion`), nullptr for none. Nothing when B, the masks known, faces another edge
 // than A (`EdgePair::faces_away`).
+// Appends the answer of triangle pair `pair` about to be written (`memory` as the answer began,
+// but for the masks: `q`'s, those the solver read) to `answers` (`measurement::record_answers`).
+[[gnu::noinline]] inline void record_answer(std::vector<measurement::RecordedAnswer>& answers,
+                                            const TrianglePair& pair, const ContactMemory& memory,
+                                            const TrianglePair::Query& q) {
+  measurement::RecordedAnswer a{pair.a, pair.b, pair.xf_a, pair.xf_b, memory};
+  a.memory.internal_edges = q.internal_edges;
+  answers.push_back(a);
+}
+
 template <class Pair>
 [[gnu::always_inline]] inline std::optional<Result<float>> solve_with_masks(
     const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
@@ -188,7 +198,11 @@ template <class Pair>
     pair.take_masks(q, memory);
     if (Pair::any_masks(q)) r = pair.solve(setting, q, pose, memory);
   }
-  if (Pair::any_masks(q)) counters().internal_edge_pairs.add();
+  ThreadCounters& count = counters();
+  if (Pair::any_masks(q)) count.internal_edge_pairs.add();
+  if constexpr (std::is_same_v<Pair, TrianglePair>) {
+    if (count.answers) record_answer(*count.answers, pair, memory, q);
+  }
   return r;
 }
 

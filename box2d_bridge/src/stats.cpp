@@ -103,3 +103,11 @@ void reset_stats() {
 }
 
 }  // namespace dyop::box2d
+
+namespace dyop::box2d {
+
+void measurement::record_answers(std::vector<RecordedAnswer>* into) {
+  detail::counters().answers = into;
+}
+
+}  // namespace dyop::box2d

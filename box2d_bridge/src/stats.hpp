@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "dyop/box2d.hpp"
+#include "dyop/box2d_measurement.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -46,6 +47,9 @@ struct ThreadCounters {
   Counter internal_edge_pairs;
   Counter recycled;
   Counter contacts;
+  // Where the thread records its triangle pairs' answers (`measurement::record_answers`), or
+  // nullptr.
+  std::vector<measurement::RecordedAnswer>* answers = nullptr;
 
   ThreadCounters();   // registers the block (see stats.cpp)
   ~ThreadCounters();  // adds it to the ended threads' totals and unregisters it

@@ -4,6 +4,10 @@
 /// Not a backend, never offered as one (`parse_backend` does not know it): a world stepped under
 /// it is physically wrong.
 
+#include <box2d/b2_polygon_shape.h>
+
+#include <vector>
+
 #include "dyop/box2d.hpp"
 
 class b2Contact;
@@ -26,5 +30,22 @@ InstallResult install_never_recompute(Backend backend, const Config& config = Co
 /// `b2CollidePolygons`. Counted in `stats` like any evaluation. What a kept manifold is measured
 /// against. For a contact of another shape pair, `manifold` gets no points.
 void evaluate_afresh(const b2Contact& contact, b2Manifold* manifold);
+
+/// One answer afresh of a triangle pair as a world's contact of the plug-in made it: the shapes,
+/// the bodies' transforms, and the pair's memory as the answer began with the masks its solver
+/// read in `internal_edges` (none where it answered without: apart beyond the skins).
+struct RecordedAnswer {
+  b2PolygonShape a;
+  b2PolygonShape b;
+  b2Transform xf_a;
+  b2Transform xf_b;
+  ContactMemory memory;
+};
+
+/// From now on, every answer afresh of a triangle pair made on the calling thread is appended to
+/// `into` (nullptr: no more): replayed through `collide_polygons` (with a copy of its `memory`:
+/// the same skips fail, the same masks are read) and through `b2CollidePolygons`, the same pairs
+/// cost what the world's answers cost, act by act. Costs the evaluation one test while off.
+void record_answers(std::vector<RecordedAnswer>* into);
 
 }  // namespace dyop::box2d::measurement
