@@ -17,7 +17,7 @@
 
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_terrain.hpp"
-#include "experiments/ground_comparison.hpp"
+#include "level_outline.hpp"  // examples/
 
 namespace {
 
@@ -66,7 +66,7 @@ std::size_t box2d_bytes(int bodies, int fixtures) {
 // The 300 m level in `world` as a terrain, timed; its figures printed when `print`.
 void build(b2World& world, dyop::box2d::OutlineTerrain& terrain, bool print) {
   const auto start = Clock::now();
-  const dyop::box2d::TerrainResult built = terrain.set_outline(dyop::experiments::outline_level());
+  const dyop::box2d::TerrainResult built = terrain.set_outline(level_outline());
   const double build_ms = ms_since(start);
   if (!built.ok()) {
     std::fprintf(stderr, "outline refused: %s\n", built.message);

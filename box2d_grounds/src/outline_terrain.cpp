@@ -103,8 +103,10 @@ constexpr int max_cells_per_side = 256;
 // rather than let a tiny chunk side allocate millions of them.
 constexpr double max_chunks_spanned = 1 << 20;
 
-// Wakes the non-static bodies whose fixtures' broad-phase boxes overlap a region: those resting on
-// triangles destroyed under them would otherwise sleep on in the air.
+// Wakes the non-static bodies whose fixtures' broad-phase boxes overlap a region: a sleeping body
+// is not collided, so one that new triangles overlap (a wall built over it) would sleep on inside
+// them. (Those touching a destroyed triangle are woken by Box2D, as any touching contact that
+// ends.)
 class Waker : public b2QueryCallback {
  public:
   bool ReportFixture(b2Fixture* f) override {
@@ -381,14 +383,12 @@ struct OutlineTerrain::State {
 
   // After fixtures were destroyed over `gone` and created over `made`: the edge data of the fixed
   // polygons around `gone` found again (edges along it may have become outline; around `made`,
-  // `add_triangles` found it), and the bodies over both woken (a sleeping body is not collided).
+  // `add_triangles` found it), and the bodies over `made` woken.
   void settle(const Box& gone, const Box& made) const {
     if (!gone.empty()) refresh_internal_edges(*world, world_box(gone));
-    Box both = gone;
-    both.add(made);
-    if (both.empty()) return;
+    if (made.empty()) return;
     Waker waker;
-    world->QueryAABB(&waker, world_box(both));
+    world->QueryAABB(&waker, world_box(made));
   }
 
   // Applies `changes` (triangulated): pieces replaced, changed triangles destroyed and created in

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dyop/box2d_grid.hpp"
+#include "level_outline.hpp"  // examples/: the 300 m outline level
 #include "scenes/installation.hpp"
 #include "scenes/metrics.hpp"
 #include "worlds/world.hpp"
@@ -146,7 +147,7 @@ class Built {
     const std::vector<Ring> loops =
         level_ == GroundLevel::TileGrid
             ? tile_loops(cells_, kColumns, kRows, kCell, kGridOrigin)
-            : chain_loops_of(level_ == GroundLevel::Flat ? flat_rings() : outline_level());
+            : chain_loops_of(level_ == GroundLevel::Flat ? flat_rings() : level_outline());
     boundary = boundary_length(loops);
     if (build_ == GroundBuild::Edges) {
       for (const Ring& loop : loops) {
@@ -410,25 +411,6 @@ bool builders_available(GroundLevel level) {
 #else
   return level == GroundLevel::TileGrid;
 #endif
-}
-
-std::vector<std::vector<b2Vec2>> outline_level() {
-  std::vector<b2Vec2> top;
-  for (int i = 1200; i >= 0; --i) {
-    const float x = 0.25f * static_cast<float>(i);
-    top.push_back({x, x < 40 ? 0 : 3 * std::sin((x - 40) / 12) * std::sin((x - 40) / 31)});
-  }
-  top.insert(top.end(), {{0, -20}, {300, -20}, {300, -12}, {292, -12}, {292, -6}, {300, -6}});
-  std::vector<std::vector<b2Vec2>> rings = {top};
-  for (int k = 0; k < 10; ++k) {
-    std::vector<b2Vec2> cave;
-    for (int i = 0; i < 24; ++i) {
-      const float a = static_cast<float>(i) * 2 * b2_pi / 24;
-      cave.push_back({20 + 27 * static_cast<float>(k) + 6 * std::cos(a), -10 + 3 * std::sin(a)});
-    }
-    rings.push_back(cave);
-  }
-  return rings;
 }
 
 std::vector<std::vector<b2Vec2>> tile_loops(const std::vector<std::uint8_t>& cells, int columns,

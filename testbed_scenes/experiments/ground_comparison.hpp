@@ -61,12 +61,6 @@ std::string name(GroundWay way);
 /// (GEOS); the tile grid always can.
 bool builders_available(GroundLevel level);
 
-/// The 300 m outline level's rings (the outline counter-clockwise, then its caves): the top from
-/// x = 300 back to 0 (a vertex every 0.25 m, flat for 40 m, hills up to 3 m beyond), the bottom at
-/// y = -20, a notch under an overhang at the right end; ten caves, ellipses of 24 vertices (6 × 3 m
-/// half-axes, centres at y = -10, 27 m apart from x = 20).
-std::vector<std::vector<b2Vec2>> outline_level();
-
 /// A tile grid's solid cells (`cells[row · columns + column]` nonzero) as the loops of a
 /// `b2ChainShape` each (`CreateLoop`), the solid on each loop's left (counter-clockwise around
 /// solid, clockwise around holes: Box2D's one-sided chains collide on the right), straight runs

@@ -33,8 +33,9 @@ Ring shifted(Ring ring, const b2Vec2& by) {
   return ring;
 }
 
-// How far a point of a cell's piece may move (metres): rounded to a 5 mm grid (`add_outline`).
-constexpr double kCellRounding = 0.5 * 1.4143 * b2_linearSlop;
+// How far a point of a cell's piece may move (metres): rounded to a grid of 1/256 m
+// (`add_outline`).
+constexpr double kCellRounding = 0.5 * 1.4143 / 256;
 
 // The outline's triangles cover its area (the outline's less its holes'), each with fixed edge
 // data equal to what the rule finds; the edges not internal run along the rings (their lengths

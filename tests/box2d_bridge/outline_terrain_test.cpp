@@ -147,7 +147,9 @@ struct RestingRow {
   World world;
   OutlineTerrain terrain{world.get()};
   std::vector<b2Body*> bodies;
-  explicit RestingRow(float x0 = 2, float x1 = 38) {
+  // `sleeping`: bodies may sleep (as in a game; the tests' worlds keep them awake), and have.
+  explicit RestingRow(float x0 = 2, float x1 = 38, bool sleeping = false) {
+    world->SetAllowSleeping(sleeping);
     EXPECT_TRUE(terrain.set_outline({flat_level(0, 40, 0, 10)}).ok());
     b2PolygonShape box;
     box.SetAsBox(0.3f, 0.3f);
@@ -166,13 +168,19 @@ struct RestingRow {
   }
 };
 
-// A crater of 1 m radius dug under a row of resting bodies: those over it fall in and land on its
-// floor; none ends inside the ground or below the crater's floor; those 3 m or more from its rim
-// never move (≤ 0.01 m/s); those between lose no support (they stay on the top).
+// A crater of 1 m radius dug under a row of resting bodies, awake or asleep: those over it fall in
+// and land on its floor (asleep, they are woken); none ends inside the ground or below the
+// crater's floor; those 3 m or more from its rim never move (≤ 0.01 m/s); those between lose no
+// support (they stay on the top), those on triangles replaced by the edit among them.
 TEST(OutlineTerrainEdits, ACraterUnderRestingBodiesDropsThoseAboveItAndNoOneElse) {
   ASSERT_TRUE(install(Backend::Dyop).ok());
-  {
-    RestingRow row;
+  for (const bool sleeping : {false, true}) {
+    SCOPED_TRACE(sleeping ? "bodies asleep" : "bodies awake");
+    RestingRow row(2, 38, sleeping);
+    if (sleeping) {
+      for (int i = 0; i < kStepsPerSecond; ++i) row.world.step();
+      for (const b2Body* b : row.bodies) ASSERT_FALSE(b->IsAwake());
+    }
     const b2Vec2 centre(20.3f, 0);
     constexpr float radius = 1.0f;
     const TerrainResult r = row.terrain.remove(centre, radius);
@@ -203,9 +211,9 @@ TEST(OutlineTerrainEdits, ACraterUnderRestingBodiesDropsThoseAboveItAndNoOneElse
       }
     }
     std::printf(
-        "crater: %d triangles destroyed, %d created, %d kept; bodies within 3 m of its "
+        "crater, %s: %d triangles destroyed, %d created, %d kept; bodies within 3 m of its "
         "rim: largest vertical speed %.4f m/s\n",
-        r.destroyed, r.created, r.kept, near_worst);
+        sleeping ? "bodies asleep" : "bodies awake", r.destroyed, r.created, r.kept, near_worst);
   }
   ASSERT_TRUE(uninstall().ok());
 }
@@ -309,24 +317,38 @@ TEST(OutlineTerrainEdits, AListenerSeesEndThenBeginOnReplacedTrianglesAndNothing
   ASSERT_TRUE(uninstall().ok());
 }
 
-// A wall added stands on the ground (a body dropped on it lands on its top), and removing it again
-// gives the ground's area back.
+// A wall added stands on the ground: a body dropped on it lands on its top; a body asleep where it
+// is built (on a platform of its own, whose contact goes on) is woken and pushed out of it;
+// removing the wall again gives the ground's area back.
 TEST(OutlineTerrainEdits, AWallAddedIsSolidAndRemovedAgainLeavesTheGroundAsItWas) {
-  World world;
-  OutlineTerrain terrain(world.get());
-  ASSERT_TRUE(terrain.set_outline({flat_level(0, 40, 0, 10)}).ok());
-  const double area = terrain.area();
-  const Ring wall = rectangle(15, -1, 17, 3);  // 1 m into the ground, 3 m above it
-  const TerrainResult r = terrain.add(wall);
-  ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_NEAR(terrain.area(), area + 6, 1e-3);
-  EXPECT_TRUE(terrain.solid(b2Vec2(16, 2.5f)));
-  b2Body* box = add_split_box(world, b2Vec2(16, 5), 0.3f);
-  for (int i = 0; i < 2 * kStepsPerSecond; ++i) world.step();
-  EXPECT_NEAR(box->GetPosition().y, 3.3f, 0.02f);
-  EXPECT_NEAR(open_length(terrain), perimeter({flat_level(0, 40, 0, 10)}) + 6, 0.05);
-  ASSERT_TRUE(terrain.remove(rectangle(15, 0, 17, 3)).ok());
-  EXPECT_NEAR(terrain.area(), area, 1e-3);
+  ASSERT_TRUE(install(Backend::Dyop).ok());
+  {
+    World world;
+    world->SetAllowSleeping(true);
+    OutlineTerrain terrain(world.get());
+    ASSERT_TRUE(terrain.set_outline({flat_level(0, 40, 0, 10)}).ok());
+    const double area = terrain.area();
+    b2Body* platform = add_body(world, b2_staticBody, b2Vec2(16.5f, 1.9f));
+    b2PolygonShape slab;
+    slab.SetAsBox(0.5f, 0.1f);
+    platform->CreateFixture(&slab, 0);
+    b2Body* asleep = add_split_box(world, b2Vec2(16.5f, 2.3f), 0.3f);
+    for (int i = 0; i < kStepsPerSecond; ++i) world.step();
+    ASSERT_FALSE(asleep->IsAwake());
+    const TerrainResult r = terrain.add(rectangle(15, -1, 17, 3));  // 1 m into the ground
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_NEAR(terrain.area(), area + 6, 1e-3);
+    EXPECT_TRUE(terrain.solid(b2Vec2(16, 2.5f)));
+    EXPECT_TRUE(asleep->IsAwake());
+    b2Body* dropped = add_split_box(world, b2Vec2(16, 5), 0.3f);
+    for (int i = 0; i < 2 * kStepsPerSecond; ++i) world.step();
+    EXPECT_NEAR(dropped->GetPosition().y, 3.3f, 0.02f);
+    EXPECT_FALSE(terrain.solid(asleep->GetPosition()));
+    EXPECT_NEAR(open_length(terrain), perimeter({flat_level(0, 40, 0, 10)}) + 6, 0.05);
+    ASSERT_TRUE(terrain.remove(rectangle(15, 0, 17, 3)).ok());
+    EXPECT_NEAR(terrain.area(), area, 1e-3);
+  }
+  ASSERT_TRUE(uninstall().ok());
 }
 
 // The number of proxies of the terrain's bodies in the world's broad phase.
