@@ -34,11 +34,12 @@ namespace dyop::box2d {
 enum class TerrainError : std::uint8_t {
   None,         ///< done
   WorldLocked,  ///< called during a step (Box2D creates and destroys no fixture then)
-  Layout,       ///< `chunk` or `cell` not a positive multiple of `terrain_grid`, or `chunk` not a
-                ///< multiple of `cell`, or `circle_error` not finite and positive
+  Layout,       ///< `chunk` or `cell` not a positive multiple of `terrain_grid`, `chunk` not a
+                ///< multiple of `cell` or above 256 cells, `circle_error` not finite and positive,
+                ///< or `simplify` not finite and non-negative
   Rings,        ///< the outline or an edit's polygon was refused: see `TerrainResult::outline`
   Circle,       ///< a circle's centre not finite, or its radius not finite or below `terrain_grid`
-  TooLarge,     ///< a coordinate beyond `max_terrain_coordinate`
+  TooLarge,     ///< a coordinate beyond `max_terrain_coordinate`, or over 2^20 chunks spanned
   Region,       ///< a region with a bound not finite, or its lower bound above its upper one
   Triangles,    ///< Box2D would refuse a triangle of the result (see `TerrainResult::triangle`)
 };
@@ -103,7 +104,8 @@ struct TerrainResult {
 /// touching a destroyed triangle are woken; a `b2ContactListener` sees `EndContact` for their
 /// contacts with it during the call, and `BeginContact` with the new triangles in the next step;
 /// contacts with kept triangles see nothing. Call between steps; not thread-safe (one GEOS
-/// context per terrain). Destroy the terrain before its world: its destructor destroys its bodies.
+/// context per terrain). The bodies are the terrain's: move or destroy none of them. Destroy the
+/// terrain before its world: its destructor destroys its bodies.
 class OutlineTerrain {
  public:
   /// An empty terrain in `world`; nothing is created until `set_outline` or `add`. A layout it
