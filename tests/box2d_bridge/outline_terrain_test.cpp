@@ -123,7 +123,7 @@ constexpr double kRoundingPerMetre = 1e-3;
 // A level with a cave and a slanted wall crossing chunks' sides and corners: the edge data of
 // every triangle is what the rule finds, and the open edges run along the rings alone (their
 // length is the rings' perimeter): every seam between chunks is internal. After a crater across
-// a seam, the same holds with the crater's rim added.
+// a seam and a hole on a corner of four chunks, the same holds with their rims added.
 TEST(OutlineTerrainEdgeData, OnlyTheOutlineIsOpenAcrossEveryChunkSeam) {
   World world;
   OutlineTerrain terrain(world.get(), small_chunks());
@@ -140,6 +140,13 @@ TEST(OutlineTerrainEdgeData, OnlyTheOutlineIsOpenAcrossEveryChunkSeam) {
   // The rim replaces 2 m of top by a half-circle of 1 m radius (within its polygon's error).
   const double with_crater = outline - 2 + b2_pi * 1.0;
   EXPECT_NEAR(open_length(terrain), with_crater, 0.02 + kRoundingPerMetre * with_crater);
+  // A hole on the corner (8, 0) of four chunks, wholly inside the ground: its rim is open, every
+  // seam through it internal.
+  const TerrainResult corner = terrain.remove(b2Vec2(8, 0), 1.0f);
+  ASSERT_TRUE(corner.ok()) << corner.message;
+  EXPECT_EQ(corner.chunks, 4);
+  const double with_hole = with_crater + 2 * b2_pi * 1.0;
+  EXPECT_NEAR(open_length(terrain), with_hole, 0.04 + kRoundingPerMetre * with_hole);
 }
 
 // A flat terrain with bodies resting along its top, 1.5 m apart: boxes and balls (friction 0.6).
@@ -528,15 +535,17 @@ TEST(OutlineTerrainInput, BadInputIsRefusedByNameAndChangesNothing) {
   EXPECT_EQ(terrain.area(), area);
 }
 
-// Random calls in any order — outlines, craters, tunnels, walls, loads and unloads, steps with
-// bodies on the ground — never crash, and leave a consistent terrain: the loaded fixtures are the
-// triangles of the loaded chunks, each with the edge data the rule finds, every body finite.
+// Random calls in any order (three seeded sequences) — outlines, craters, tunnels, walls, loads and
+// unloads, steps with bodies on the ground — never crash, and leave a consistent terrain: the
+// loaded fixtures are the triangles of the loaded chunks, each with the edge data the rule finds,
+// every body finite.
 TEST(OutlineTerrainInput, AnyOrderOfCallsLeavesAConsistentTerrain) {
   ASSERT_TRUE(install(Backend::Dyop).ok());
-  {
+  for (const unsigned seed : {63u, 64u, 65u}) {
+    SCOPED_TRACE(seed);
     World world;
     OutlineTerrain terrain(world.get(), small_chunks());
-    std::mt19937 random(63);
+    std::mt19937 random(seed);
     std::uniform_real_distribution<float> x(-6, 30), y(-8, 4), size(0.1f, 3);
     for (int i = 0; i < 8; ++i) add_split_box(world, b2Vec2(x(random), 2), 0.3f);
     for (int call = 0; call < 120; ++call) {
