@@ -149,6 +149,30 @@ TEST(OutlineTerrainEdgeData, OnlyTheOutlineIsOpenAcrossEveryChunkSeam) {
   EXPECT_NEAR(open_length(terrain), with_hole, 0.04 + kRoundingPerMetre * with_hole);
 }
 
+// A terrain placed and turned by its body definition: edits and loads are in its own frame, and
+// the edge data around a crater across a seam, and around a chunk loaded and unloaded, is found
+// again where the chunks are in the world.
+TEST(OutlineTerrainEdgeData, ATurnedTerrainFindsItsEdgeDataAgainWhereItLies) {
+  World world;
+  TerrainOptions o = small_chunks();
+  o.body.position.Set(40, 30);
+  o.body.angle = 0.5f;
+  OutlineTerrain terrain(world.get(), o);
+  const std::vector<Ring> rings = {rectangle(-6, -6, 10, 1)};
+  ASSERT_TRUE(terrain.set_outline(rings).ok());
+  ASSERT_TRUE(terrain.remove(b2Vec2(4, 1), 1.0f).ok());
+  const double with_crater = perimeter(rings) - 2 + b2_pi * 1.0;
+  EXPECT_NEAR(open_length(terrain), with_crater, 0.02 + kRoundingPerMetre * with_crater);
+  b2AABB left;  // the chunks x < 4 of the terrain's frame
+  left.lowerBound.Set(-6, -6);
+  left.upperBound.Set(3, 1);
+  ASSERT_TRUE(terrain.load(left).ok());
+  ASSERT_LT(terrain.loaded_chunks(), terrain.chunk_count());
+  open_length(terrain);  // each loaded triangle's edge data is what the rule finds now
+  ASSERT_TRUE(terrain.load_all().ok());
+  EXPECT_NEAR(open_length(terrain), with_crater, 0.02 + kRoundingPerMetre * with_crater);
+}
+
 // A flat terrain with bodies resting along its top, 1.5 m apart: boxes and balls (friction 0.6).
 struct RestingRow {
   World world;
