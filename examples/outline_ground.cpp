@@ -14,34 +14,7 @@
 #include <dyop/box2d.hpp>
 #include <dyop/box2d_outline.hpp>
 
-namespace {
-
-using Ring = std::vector<b2Vec2>;
-
-// The ground's outline, counter-clockwise: the top from x = 300 back to 0 (a vertex every 0.25 m),
-// then the bottom at y = -20, with a notch cut into the right side under an overhang.
-Ring outline() {
-  Ring ring;
-  for (int i = 1200; i >= 0; --i) {
-    const float x = 0.25f * static_cast<float>(i);
-    const float hills = x < 40 ? 0 : 3 * std::sin((x - 40) / 12) * std::sin((x - 40) / 31);
-    ring.push_back({x, hills});
-  }
-  ring.insert(ring.end(), {{0, -20}, {300, -20}, {300, -12}, {292, -12}, {292, -6}, {300, -6}});
-  return ring;
-}
-
-// A cave: an ellipse of 24 vertices.
-Ring cave(float cx, float cy, float rx, float ry) {
-  Ring ring;
-  for (int i = 0; i < 24; ++i) {
-    const float a = static_cast<float>(i) * 2 * b2_pi / 24;
-    ring.push_back({cx + rx * std::cos(a), cy + ry * std::sin(a)});
-  }
-  return ring;
-}
-
-}  // namespace
+#include "level_outline.hpp"
 
 int main() {
   if (!dyop::box2d::install(dyop::box2d::Backend::Dyop).ok()) return 1;
@@ -49,8 +22,7 @@ int main() {
     b2World world(b2Vec2(0, -10));
     b2BodyDef ground_def;
     b2Body* ground = world.CreateBody(&ground_def);
-    std::vector<Ring> rings = {outline()};
-    for (int k = 0; k < 10; ++k) rings.push_back(cave(20 + 27 * static_cast<float>(k), -10, 6, 3));
+    const std::vector<std::vector<b2Vec2>> rings = level_outline();
 
     const auto start = std::chrono::steady_clock::now();
     const dyop::box2d::OutlineResult r = dyop::box2d::add_outline(*ground, rings);

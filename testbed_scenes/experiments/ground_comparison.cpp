@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dyop/box2d_grid.hpp"
+#include "level_outline.hpp"  // examples/: the 300 m outline level
 #include "scenes/installation.hpp"
 #include "scenes/metrics.hpp"
 #include "worlds/world.hpp"
@@ -59,28 +60,6 @@ std::vector<std::uint8_t> tile_cells() {
 
 // The column whose top cell a refresh digs, on a hill's flank.
 constexpr int kPitColumn = 200;
-
-// The 300 m outline level (counter-clockwise): the top from x = 300 back to 0 (a vertex every
-// 0.25 m, flat for 40 m, hills beyond), the bottom at y = -20, a notch under an overhang at the
-// right end; and ten caves, ellipses of 24 vertices.
-std::vector<Ring> outline_rings() {
-  Ring top;
-  for (int i = 1200; i >= 0; --i) {
-    const float x = 0.25f * static_cast<float>(i);
-    top.push_back({x, x < 40 ? 0 : 3 * std::sin((x - 40) / 12) * std::sin((x - 40) / 31)});
-  }
-  top.insert(top.end(), {{0, -20}, {300, -20}, {300, -12}, {292, -12}, {292, -6}, {300, -6}});
-  std::vector<Ring> rings = {top};
-  for (int k = 0; k < 10; ++k) {
-    Ring cave;
-    for (int i = 0; i < 24; ++i) {
-      const float a = static_cast<float>(i) * 2 * b2_pi / 24;
-      cave.push_back({20 + 27 * static_cast<float>(k) + 6 * std::cos(a), -10 + 3 * std::sin(a)});
-    }
-    rings.push_back(cave);
-  }
-  return rings;
-}
 
 // The flat level: 60 m of top with a vertex every 0.25 m, 10 m deep (counter-clockwise).
 std::vector<Ring> flat_rings() {
@@ -168,7 +147,7 @@ class Built {
     const std::vector<Ring> loops =
         level_ == GroundLevel::TileGrid
             ? tile_loops(cells_, kColumns, kRows, kCell, kGridOrigin)
-            : chain_loops_of(level_ == GroundLevel::Flat ? flat_rings() : outline_rings());
+            : chain_loops_of(level_ == GroundLevel::Flat ? flat_rings() : level_outline());
     boundary = boundary_length(loops);
     if (build_ == GroundBuild::Edges) {
       for (const Ring& loop : loops) {

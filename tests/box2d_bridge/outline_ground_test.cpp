@@ -12,12 +12,11 @@
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_outline.hpp"
+#include "support/rings.hpp"
 #include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
-
-using Ring = std::vector<b2Vec2>;
 
 double ring_area(const Ring& ring) {
   double sum = 0;
@@ -29,26 +28,14 @@ double ring_area(const Ring& ring) {
   return std::abs(sum) / 2;
 }
 
-Ring rectangle(float x0, float y0, float x1, float y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 Ring shifted(Ring ring, const b2Vec2& by) {
   for (b2Vec2& p : ring) p += by;
   return ring;
 }
 
-double perimeter(const std::vector<Ring>& rings) {
-  double sum = 0;
-  for (const Ring& ring : rings) {
-    for (std::size_t i = 0; i < ring.size(); ++i)
-      sum += (ring[(i + 1) % ring.size()] - ring[i]).Length();
-  }
-  return sum;
-}
-
-// How far a point of a cell's piece may move (metres): rounded to a 5 mm grid (`add_outline`).
-constexpr double kCellRounding = 0.5 * 1.4143 * b2_linearSlop;
+// How far a point of a cell's piece may move (metres): rounded to a grid of 1/256 m
+// (`add_outline`).
+constexpr double kCellRounding = 0.5 * 1.4143 / 256;
 
 // The outline's triangles cover its area (the outline's less its holes'), each with fixed edge
 // data equal to what the rule finds; the edges not internal run along the rings (their lengths
