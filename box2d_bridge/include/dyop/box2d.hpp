@@ -163,7 +163,7 @@ inline constexpr float default_recycle_distance = 0.001f;
 /// the skips (work whose result nobody uses; with an exact backend the world is bit-identical with
 /// them on or off), the internal-edge rule, manifold recycling and which pairs the exact solver
 /// answers. Presets: `all()` (the default), `no_skips()`, `off()`. Each field's rationale:
-/// docs/box2d-plugin.md, "`Config`, field by field".
+/// docs/box2d-plugin.md, "`Config`".
 struct Config {
   /// Skip: a pair whose bounding circles are farther apart than `reach` gets the empty manifold
   /// before any axis work. On by default.
@@ -212,20 +212,16 @@ struct Config {
     return c;
   }
   /// Everything off: every skip, the internal-edge rule and recycling (`recycle_distance` 0); the
-  /// routing as by default (`triangles_only` off, `edges_and_chains` on). Each pair then gets the
-  /// backend's plain answer every step, fixture by fixture as Box2D collides them.
+  /// routing as by default (`triangles_only` off, `edges_and_chains` on). Each pair then gets its
+  /// plain answer every step, fixture by fixture as Box2D collides them.
   static Config off() {
     Config c = no_skips();
     c.internal_edges = false;
     c.recycle_distance = 0;
     return c;
   }
-  /// `no_skips()`, by its old name: it never turned the rule or recycling off.
-  [[deprecated(
-      "Config::none() is Config::no_skips(); Config::off() turns everything off")]] static Config
-  none() {
-    return no_skips();
-  }
+  /// `no_skips()`, by its old name: it never turned the rule or recycling off (`off()` does).
+  [[deprecated("use Config::no_skips()")]] static Config none() { return no_skips(); }
 };
 
 /// True when `x` and `y` switch the same skips, internal-edge rule and recycling.
