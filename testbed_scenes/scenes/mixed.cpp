@@ -1,6 +1,6 @@
 // `mixed`: triangles with boxes and circles on a ground of two-sided edges. Triangle pairs go to
 // the plug-in's backend; boxes, circles and the edges' pairs to the exact solver
-// (`Config::edges_and_chains`); circle pairs keep Box2D's own contacts.
+// (`Config::edges_and_chains`); circle–circle pairs keep Box2D's own contacts.
 #include "scenes/builders.hpp"
 
 namespace dyop::scenes::detail {

@@ -189,8 +189,8 @@ struct Config {
 
   /// Only triangle pairs go to the backend, as in version 0.1: other polygon pairs to
   /// `b2CollidePolygons`, polygon–circle, edge and chain pairs keep Box2D's own contacts. Off by
-  /// default: every polygon pair and polygon–circle pair is answered exactly (`dyop::collide`),
-  /// with the internal-edge rule.
+  /// default: every other polygon pair, polygon–circle pair and (with `edges_and_chains`) edge and
+  /// chain pair is answered exactly (`dyop::collide`), with the internal-edge rule.
   bool triangles_only = false;
 
   /// Edge and chain pairs (`b2EdgeShape`, `b2ChainShape` against polygons and circles) are
