@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (GCC), in build-asan/:
-# configure, build the test programs only (and the `dyop` program, which the command-line tests
-# run; not the benchmarks or the examples), then ctest. Any sanitizer report aborts the test that
+# configure, build the test programs only (with the `dyop` program, which the command-line tests
+# run, and the examples, which run as tests; not the benchmarks), then ctest. Any sanitizer report aborts the test that
 # made it, and the run fails. Box2D comes from Debian uninstrumented: ASan still checks every
 # access our code makes.
 #   SANITIZE_EXCLUDE  ctest -E regular expression of tests left out (default: the many-worlds
@@ -19,7 +19,7 @@ cmake -S . -B build-asan "${dyop_generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInf
       -DCMAKE_CXX_FLAGS="$sanitizers -fno-omit-frame-pointer" \
       -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" -DCMAKE_SHARED_LINKER_FLAGS="$sanitizers" \
       -DDYOP_BUILD_BENCH=OFF >/dev/null
-cmake --build build-asan -j"$(nproc)" --target dyop_tests box2d_bridge_tests testbed_tests
+cmake --build build-asan -j"$(nproc)" --target dyop_test_programs
 echo "sanitize: built in $((SECONDS - start)) s" >&2
 
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1

@@ -22,11 +22,11 @@ bool listed(const std::array<const char*, N>& names, const std::string& name) {
 // so what is compared is measured as close together in time as possible.
 SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int steps,
                               const CompareOptions& options) {
-  std::vector<box2d::Config> configs = {box2d::Config::none(), options.skips};
+  std::vector<box2d::Config> configs = {box2d::Config::no_skips(), options.skips};
   if (is_skip_target(s.name, b)) {
     for (const scenes::SkipSwitch& sw : scenes::skip_switches()) {
       if (sw.field == &box2d::Config::lin_canny_cache) continue;
-      box2d::Config alone = box2d::Config::none();
+      box2d::Config alone = box2d::Config::no_skips();
       alone.*(sw.field) = true;
       configs.push_back(alone);
     }

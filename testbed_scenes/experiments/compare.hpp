@@ -93,7 +93,7 @@ SkipMeasurement measure_skips(const scenes::SceneInfo& s, box2d::Backend b, int 
                               const CompareOptions& options);
 
 struct SkipMeasurement {
-  scenes::SceneMetrics off;  ///< `box2d::Config::none()`
+  scenes::SceneMetrics off;  ///< `box2d::Config::no_skips()`
   scenes::SceneMetrics on;   ///< `CompareOptions::skips`
   /// `skip_target_scenes` with `skip_target_backend`: each switch alone, in `skip_switches` order,
   /// except `lin-canny-cache` (it changes nothing but `lin-canny`); empty otherwise.

@@ -1,5 +1,6 @@
-// `mixed`: triangles with boxes and circles on a ground of edges. Triangle pairs go to the
-// plug-in's backend, boxes and circles to the exact solver; the edges keep Box2D's own contacts.
+// `mixed`: triangles with boxes and circles on a ground of two-sided edges. Triangle pairs go to
+// the plug-in's backend; boxes, circles and the edges' pairs to the exact solver
+// (`Config::edges_and_chains`); circle–circle pairs keep Box2D's own contacts.
 #include "scenes/builders.hpp"
 
 namespace dyop::scenes::detail {

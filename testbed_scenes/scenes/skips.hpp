@@ -56,13 +56,13 @@ struct ParsedSkips {
   bool ok() const { return error.empty(); }  ///< true when `error` is empty
 };
 
-/// A `--skip` argument: "all" (`Config::all()`), "none" (`Config::none()`), or a comma-separated
-/// list of switch names (those on, the others off; repeats allowed). An unknown or empty name is
-/// an error.
+/// A `--skip` argument: "all" (`Config::all()`), "none" (`Config::no_skips()`), or a
+/// comma-separated list of switch names (those on, the others off; repeats allowed). An unknown or
+/// empty name is an error.
 inline ParsedSkips parse_skips(std::string_view text) {
   ParsedSkips out;
   if (text == "all") return out;
-  out.config = box2d::Config::none();
+  out.config = box2d::Config::no_skips();
   if (text == "none") return out;
   const auto& switches = skip_switches();
   for (std::size_t begin = 0;;) {

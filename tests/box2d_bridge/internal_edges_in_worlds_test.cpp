@@ -227,7 +227,7 @@ Config rule_on() {
 TEST(InternalEdges, TheRuleIsOnByDefault) {
   EXPECT_TRUE(Config{}.internal_edges);
   EXPECT_TRUE(Config::all().internal_edges);
-  EXPECT_TRUE(Config::none().internal_edges);  // not a skip
+  EXPECT_TRUE(Config::no_skips().internal_edges);  // not a skip
 }
 
 // Ground fixtures of cell `column` in `row` (0: top row) of a diagonal ground built at x0 = 0:
@@ -333,7 +333,7 @@ TEST(InternalEdges, MasksLentBetweenContactsOfABodyAreTheMasksFoundAfresh) {
 // bin of triangles make contacts that hold no masks while apart, and every contact whose manifold
 // has points holds the masks of its two fixtures found afresh.
 TEST(InternalEdges, AContactFindsItsMasksOnlyOnceWithinTheSkins) {
-  Config every_pair = Config::none();
+  Config every_pair = Config::no_skips();
   every_pair.recycle_distance = 0;
   ASSERT_TRUE(install(Backend::Dyop, every_pair).ok());
   World world;

@@ -82,7 +82,7 @@ Outcome run(Backend backend, const Config& config, int steps) {
 class Skips : public ::testing::TestWithParam<Backend> {};
 
 TEST_P(Skips, EverySkipOnGivesTheBitIdenticalWorldOfEverySkipOff) {
-  const Outcome off = run(GetParam(), Config::none(), 360);
+  const Outcome off = run(GetParam(), Config::no_skips(), 360);
   const Outcome on = run(GetParam(), Config::all(), 360);
   EXPECT_EQ(on.hash, off.hash);
   EXPECT_EQ(on.stats.triangles(GetParam()), off.stats.triangles(GetParam()));
@@ -100,9 +100,9 @@ TEST_P(Skips, EverySkipOnGivesTheBitIdenticalWorldOfEverySkipOff) {
 }
 
 TEST_P(Skips, EachSkipAloneGivesTheBitIdenticalWorld) {
-  const Outcome off = run(GetParam(), Config::none(), 240);
+  const Outcome off = run(GetParam(), Config::no_skips(), 240);
   for (int which = 0; which < 3; ++which) {
-    Config one = Config::none();
+    Config one = Config::no_skips();
     bool* flags[] = {&one.bounds_early_out, &one.warm_axis, &one.lin_canny_cache};
     *flags[which] = true;
     EXPECT_EQ(run(GetParam(), one, 240).hash, off.hash) << "skip " << which;

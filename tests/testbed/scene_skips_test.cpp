@@ -55,7 +55,7 @@ class SkipsInEveryScene : public ::testing::TestWithParam<std::tuple<std::string
 
 TEST_P(SkipsInEveryScene, EverySkipOnGivesTheHashOfEverySkipOff) {
   const auto& [scene, backend] = GetParam();
-  const SceneMetrics off = run_scene(scene, backend, steps_of(scene), 0, Config::none());
+  const SceneMetrics off = run_scene(scene, backend, steps_of(scene), 0, Config::no_skips());
   const SceneMetrics on = run_scene(scene, backend, steps_of(scene), 0, Config::all());
   EXPECT_EQ(on.hash, off.hash);
   EXPECT_EQ(on.contact_updates, off.contact_updates);
@@ -92,7 +92,7 @@ TEST_P(LinCannySkips, EverySkipButTheCacheKeepsTheAnswer) {
   Config all_but_cache = Config::all();
   all_but_cache.lin_canny_cache = false;
   const int steps = steps_of(scene);
-  const SceneMetrics off = run_scene(scene, Backend::LinCanny, steps, 0, Config::none());
+  const SceneMetrics off = run_scene(scene, Backend::LinCanny, steps, 0, Config::no_skips());
   const SceneMetrics cold = run_scene(scene, Backend::LinCanny, steps, 0, all_but_cache);
   EXPECT_EQ(cold.hash, off.hash);
   EXPECT_EQ(cold.contact_updates, off.contact_updates);
@@ -109,7 +109,7 @@ TEST(SkipArgument, AllNoneAndLists) {
   ASSERT_TRUE(parse_skips("all").ok());
   EXPECT_EQ(flags(parse_skips("all").config), flags(Config::all()));
   ASSERT_TRUE(parse_skips("none").ok());
-  EXPECT_EQ(flags(parse_skips("none").config), flags(Config::none()));
+  EXPECT_EQ(flags(parse_skips("none").config), flags(Config::no_skips()));
   const ParsedSkips list = parse_skips("warm-axis,bounds,warm-axis");
   ASSERT_TRUE(list.ok()) << list.error;
   EXPECT_EQ(flags(list.config), (std::vector<bool>{true, true, false}));
@@ -117,7 +117,7 @@ TEST(SkipArgument, AllNoneAndLists) {
   ASSERT_TRUE(each.ok()) << each.error;
   EXPECT_EQ(flags(each.config), flags(Config::all()));
   EXPECT_EQ(skip_argument(each.config), "all");
-  EXPECT_EQ(skip_argument(Config::none()), "none");
+  EXPECT_EQ(skip_argument(Config::no_skips()), "none");
   EXPECT_EQ(skip_argument(list.config), "bounds,warm-axis");
   for (const SkipSwitch& s : skip_switches()) {
     const ParsedSkips one = parse_skips(s.name);
@@ -141,7 +141,7 @@ TEST(SkipArgument, AnUnknownOrEmptyNameIsAnErrorNamingIt) {
 using testing::json_of;
 
 TEST(SkipFigures, JsonHasTheSkipCountsAndTheSkipList) {
-  Config some = Config::none();
+  Config some = Config::no_skips();
   some.bounds_early_out = some.warm_axis = true;
   const SceneMetrics m = run_scene("rain", Backend::Dyop, 60, 0, some);
   const nlohmann::json j = json_of(m);
@@ -154,7 +154,7 @@ TEST(SkipFigures, JsonHasTheSkipCountsAndTheSkipList) {
   EXPECT_EQ(j["skips"]["bounds"], skipped(m, Skip::Bounds));
   EXPECT_GT(j["skips"]["bounds"].get<std::uint64_t>(), 0u);
   EXPECT_EQ(j["skip_config"], nlohmann::json::array({"bounds", "warm-axis"}));
-  EXPECT_EQ(json_of(run_scene("stack", Backend::Dyop, 2, 0, Config::none()))["skip_config"],
+  EXPECT_EQ(json_of(run_scene("stack", Backend::Dyop, 2, 0, Config::no_skips()))["skip_config"],
             nlohmann::json::array());
 
   const nlohmann::json paper = json_of(run_scene("paper", Backend::Dyop, 2, 0, some));

@@ -159,9 +159,11 @@ struct InstallResult {
 /// where the depth error in falling piles is Box2D's own contact's (docs/measurements.md).
 inline constexpr float default_recycle_distance = 0.001f;
 
-/// What `install` sets up for triangle pairs: the skips (work whose result nobody uses; with an
-/// exact backend the world is bit-identical with them on or off), the internal-edge rule and
-/// manifold recycling. Each field's rationale: docs/box2d-plugin.md, "`Config`, field by field".
+/// What `install` sets up for every pair the plug-in answers (polygons, circles, edges, chains):
+/// the skips (work whose result nobody uses; with an exact backend the world is bit-identical with
+/// them on or off), the internal-edge rule, manifold recycling and which pairs the exact solver
+/// answers. Presets: `all()` (the default), `no_skips()`, `off()`. Each field's rationale:
+/// docs/box2d-plugin.md, "`Config`".
 struct Config {
   /// Skip: a pair whose bounding circles are farther apart than `reach` gets the empty manifold
   /// before any axis work. On by default.
@@ -173,9 +175,11 @@ struct Config {
   /// On by default.
   bool lin_canny_cache = true;
 
-  /// The internal-edge rule: exact backends (`Dyop`, `Sat`) never push along edges shared inside a
-  /// triangulated body or static ground, so bodies slide without ghost collisions. Changes the
-  /// answer; on by default; off: Box2D's fixture-by-fixture handling (docs/box2d-plugin.md).
+  /// The internal-edge rule: the exact answers (triangle pairs under `Dyop` and `Sat`, every other
+  /// pair under every backend but `Box2D`) never push along edges shared inside a body or a
+  /// static ground, nor into their closed vertices, so bodies slide without ghost collisions.
+  /// Changes the answer; on by default; off: Box2D's fixture-by-fixture handling
+  /// (docs/box2d-plugin.md).
   bool internal_edges = true;
 
   /// Manifold recycling (metres): a contact keeps its manifold while its pair's relative pose moved
@@ -185,8 +189,8 @@ struct Config {
 
   /// Only triangle pairs go to the backend, as in version 0.1: other polygon pairs to
   /// `b2CollidePolygons`, polygon–circle, edge and chain pairs keep Box2D's own contacts. Off by
-  /// default: every polygon pair and polygon–circle pair is answered exactly (`dyop::collide`),
-  /// with the internal-edge rule.
+  /// default: every other polygon pair, polygon–circle pair and (with `edges_and_chains`) edge and
+  /// chain pair is answered exactly (`dyop::collide`), with the internal-edge rule.
   bool triangles_only = false;
 
   /// Edge and chain pairs (`b2EdgeShape`, `b2ChainShape` against polygons and circles) are
@@ -194,16 +198,30 @@ struct Config {
   /// for them. On by default.
   bool edges_and_chains = true;
 
-  /// Every skip on (the default), internal edges as by default.
+  /// The default: every skip on, the internal-edge rule on, recycling at
+  /// `default_recycle_distance`, every pair family answered exactly.
   static Config all() { return {}; }
-  /// Every skip off; the internal-edge rule and recycling as by default.
-  static Config none() {
+  /// Every skip off (`bounds_early_out`, `warm_axis`, `lin_canny_cache`); the internal-edge rule,
+  /// recycling and the routing as by default. With an exact backend the world is bit-identical to
+  /// `all()`'s: for measuring what the skips save.
+  static Config no_skips() {
     Config c;
     c.bounds_early_out = false;
     c.warm_axis = false;
     c.lin_canny_cache = false;
     return c;
   }
+  /// Everything off: every skip, the internal-edge rule and recycling (`recycle_distance` 0); the
+  /// routing as by default (`triangles_only` off, `edges_and_chains` on). Each pair then gets its
+  /// plain answer every step, fixture by fixture as Box2D collides them.
+  static Config off() {
+    Config c = no_skips();
+    c.internal_edges = false;
+    c.recycle_distance = 0;
+    return c;
+  }
+  /// `no_skips()`, by its old name: it never turned the rule or recycling off (`off()` does).
+  [[deprecated("use Config::no_skips()")]] static Config none() { return no_skips(); }
 };
 
 /// True when `x` and `y` switch the same skips, internal-edge rule and recycling.
@@ -217,10 +235,11 @@ inline bool operator==(const Config& x, const Config& y) {
 /// Beyond this distance no manifold point can exist (metres), for skins summing to `margin`:
 /// points are kept up to `margin` in front of the reference face and `margin` beyond its ends,
 /// and no deeper behind it than the face-choice `face_hysteresis`, so every kept point is within
-/// sqrt(2)·margin + face_hysteresis of the other triangle; 2·margin + face_hysteresis is a bound.
+/// sqrt(2)·margin + face_hysteresis of the other shape; 2·margin + face_hysteresis is a bound.
 inline float reach(float margin) { return 2 * margin + face_hysteresis; }
 
-/// Why a triangle pair's evaluation was skipped (index of `Stats::skipped`).
+/// Why an evaluation was skipped: its manifold proved empty without running the solver (index of
+/// `Stats::skipped`, which counts the triangle pairs' skips).
 enum class Skip : std::uint8_t {
   Bounds,    ///< bounding circles apart beyond `reach` (`Config::bounds_early_out`)
   WarmAxis,  ///< last step's face still separates beyond the skins (`Config::warm_axis`)
@@ -305,8 +324,9 @@ struct ContactMemory {
   ShapeMasks masks_b{};
 };
 
-/// Registers the plug-in's contact for polygon–polygon pairs, with `backend` and `config` for
-/// triangle pairs, and resets `stats`. Safe at any moment no thread is stepping a world, even
+/// Registers the plug-in's contact for every pair family it answers (polygon–polygon,
+/// polygon–circle, edge and chain against polygons and circles), with `backend` for triangle pairs
+/// and `config` for all, and resets `stats`. Safe at any moment no thread is stepping a world, even
 /// mid-simulation: the plug-in's contacts follow it from the next step, contacts Box2D made before
 /// it keep Box2D's answer until they end (docs/box2d-plugin.md). A value outside `Backend` is
 /// refused (`UnsupportedMethod`) and changes nothing.
@@ -417,7 +437,7 @@ struct Stats {
   }
   /// Triangle pairs evaluated by `b`.
   std::uint64_t triangles(Backend b) const { return triangle_pairs[static_cast<int>(b)]; }
-  /// Evaluations skipped for reason `s`.
+  /// Triangle-pair evaluations skipped for reason `s`.
   std::uint64_t skips(Skip s) const { return skipped[static_cast<int>(s)]; }
 };
 

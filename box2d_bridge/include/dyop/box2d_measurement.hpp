@@ -23,12 +23,12 @@ namespace dyop::box2d::measurement {
 /// reports `backend`; `install` or `uninstall` ends it. Same threading rules as `install`.
 InstallResult install_never_recompute(Backend backend, const Config& config = Config::all());
 
-/// The manifold `contact` (a polygon pair's contact of a world) would get now if it kept nothing:
-/// the plug-in's contact evaluated afresh at its bodies' current transforms with the installed
-/// setting and its own internal-edge masks (`Config::recycle_distance` ignored), without changing
-/// the contact; a contact Box2D's own code made, or any contact while uninstalled,
-/// `b2CollidePolygons`. Counted in `stats` like any evaluation. What a kept manifold is measured
-/// against. For a contact of another shape pair, `manifold` gets no points.
+/// The manifold `contact` (a contact of a world, of any pair family the plug-in answers) would get
+/// now if it kept nothing: the plug-in's contact evaluated afresh at its bodies' current transforms
+/// with the installed setting and its own internal-edge masks (`Config::recycle_distance`
+/// ignored), without changing the contact; a contact Box2D's own code made, or any contact while
+/// uninstalled, Box2D's own function for its pair. Counted in `stats` like any evaluation. What a
+/// kept manifold is measured against. For a circle–circle contact, `manifold` gets no points.
 void evaluate_afresh(const b2Contact& contact, b2Manifold* manifold);
 
 /// One answer afresh of a triangle pair as a world's contact of the plug-in made it: the shapes,

@@ -24,6 +24,20 @@ inline const worlds::Material kIce{1.0f, 0.0f};
 // Half the side of the 1 m boxes the stacking tests build (metres).
 constexpr float kBoxHalf = 0.5f;
 
+// A `SetAsBox` fixture of half sizes `hx`, `hy` about `center` (body frame) on `body`; a sensor
+// when `sensor`.
+inline b2Fixture* add_box(b2Body* body, float hx, float hy, const worlds::Material& material,
+                          const b2Vec2& center = b2Vec2(0, 0), bool sensor = false) {
+  b2PolygonShape box;
+  box.SetAsBox(hx, hy, center, 0);
+  b2FixtureDef def;
+  def.shape = &box;
+  def.density = material.density;
+  def.friction = material.friction;
+  def.isSensor = sensor;
+  return body->CreateFixture(&def);
+}
+
 // Deepest overlap of the skins over the body's touching contacts (metres, 0 when none overlap):
 // minus the least world-manifold separation, which Box2D measures between the skins. Box2D's
 // position solver lets skins overlap by about b2_linearSlop at rest, by design.
