@@ -14,6 +14,7 @@
 
 int main() {
   if (!dyop::box2d::install(dyop::box2d::Backend::Dyop).ok()) return 1;
+  bool ok = false;
   {
     b2World world(b2Vec2(0, -10));
     dyop::box2d::OutlineTerrain terrain(world);
@@ -40,10 +41,12 @@ int main() {
     const dyop::box2d::TerrainResult dug = terrain.remove(b2Vec2(36, 0), 1.0f);
     std::printf("crater dug while unloaded: %d chunk(s) changed, %d fixtures created\n", dug.chunks,
                 dug.created);
+    int most_loaded = 0;
     for (int step = 1; step <= 600; ++step) {
       ball->SetAngularVelocity(-8);  // rolling along +x at about 4 m/s until it meets the crater
       world.Step(1.0f / 60, 8, 3);
       terrain.load(camera_at(ball->GetPosition().x));
+      most_loaded = std::max(most_loaded, terrain.loaded_chunks());
       if (step % 120 == 0) {
         const b2Vec2 p = ball->GetPosition();
         std::printf(
@@ -53,7 +56,13 @@ int main() {
             all_triangles, world.GetProxyCount());
       }
     }
+    // The crater dug while unloaded stopped the ball (it rests in it), and the world held a few
+    // chunks at a time (the camera spans 5 columns of 3), never the level.
+    const b2Vec2 end = ball->GetPosition();
+    ok = std::fabs(end.x - 36) < 1.5f && end.y < 0 && most_loaded <= all_chunks / 3;
+    std::printf("ball ends at (%.2f, %.2f); at most %d of %d chunks loaded\n", end.x, end.y,
+                most_loaded, all_chunks);
   }
   dyop::box2d::uninstall();
-  return 0;
+  return ok ? 0 : 1;
 }
