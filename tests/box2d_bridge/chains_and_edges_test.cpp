@@ -15,21 +15,16 @@
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_mesh.hpp"
+#include "support/level_gliders.hpp"
 #include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
 
-constexpr float kLevelPushSpeed = 4.0f;  // m/s, frictionless
 constexpr float kLevelGlideSeconds = 4.0f;
 constexpr float kVertexSpacing = 0.25f;  // m between the ground's vertices
-// The bounds of a glide: vertical speed after the push (m/s), and the share of the free travel
-// (speed · time) a body makes.
-constexpr float kLevelGlideVertical = 0.01f;
-constexpr float kLevelGlideTravel = 0.99f;
 
 enum class LevelGround { Chain, Loop, TwoSidedEdges, EdgeBodies };
-enum class LevelBody { TriangleBox, Box, Hexagon, Ball };
 
 const char* name(LevelGround g) {
   switch (g) {
@@ -41,20 +36,6 @@ const char* name(LevelGround g) {
       return "two-sided edges end to end";
     case LevelGround::EdgeBodies:
       return "two-sided edges end to end, a static body each";
-  }
-  return "";
-}
-
-const char* name(LevelBody b) {
-  switch (b) {
-    case LevelBody::TriangleBox:
-      return "box of two triangles";
-    case LevelBody::Box:
-      return "SetAsBox box";
-    case LevelBody::Hexagon:
-      return "hexagon";
-    case LevelBody::Ball:
-      return "ball";
   }
   return "";
 }
@@ -108,46 +89,6 @@ void add_level_ground(World& world, LevelGround kind, float x0, float length, bo
       }
       return;
   }
-}
-
-// A frictionless body resting on y = 0 at x = 0 (hanging from it when not `up`), pushed along +x.
-b2Body* add_level_glider(World& world, LevelBody kind, bool up = true) {
-  const float side = up ? 1.0f : -1.0f;
-  b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(0, 0));
-  b2FixtureDef def;
-  def.friction = 0;
-  def.density = 1;
-  b2PolygonShape polygon;
-  b2CircleShape ball;
-  switch (kind) {
-    case LevelBody::TriangleBox:
-      add_triangle(body, b2Vec2(-0.4f, 0), b2Vec2(0.4f, 0), b2Vec2(0.4f, side * 0.6f), kIce);
-      add_triangle(body, b2Vec2(-0.4f, 0), b2Vec2(0.4f, side * 0.6f), b2Vec2(-0.4f, side * 0.6f),
-                   kIce);
-      break;
-    case LevelBody::Box:
-      polygon.SetAsBox(0.4f, 0.3f, b2Vec2(0, side * 0.3f), 0);
-      def.shape = &polygon;
-      break;
-    case LevelBody::Hexagon: {
-      b2Vec2 points[6];
-      for (int i = 0; i < 6; ++i) {
-        const float a = 3.14159265f / 3 * i;
-        points[i] = b2Vec2(0.35f * std::cos(a), side * (0.35f * std::sin(a) + 0.35f * 0.8660254f));
-      }
-      polygon.Set(points, 6);
-      def.shape = &polygon;
-      break;
-    }
-    case LevelBody::Ball:
-      ball.m_radius = 0.3f;
-      ball.m_p = b2Vec2(0, side * 0.3f);
-      def.shape = &ball;
-      break;
-  }
-  if (def.shape) body->CreateFixture(&def);
-  body->SetLinearVelocity(b2Vec2(kLevelPushSpeed, 0));
-  return body;
 }
 
 struct LevelGlide {
