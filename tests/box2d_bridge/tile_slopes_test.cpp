@@ -538,7 +538,12 @@ Crossing cross(Joint joint, const RampCase& c, LevelBody kind, bool seamless = f
                              [&](const Sample& s) { return b2Dot(s.p, ramp.along()) < 1.0f; });
       out.glide = glide(samples, past + settle, foot, -ramp.along(), ramp.slope_gravity());
       if (foot < static_cast<int>(samples.size())) {
-        out.kept = -b2Dot(samples[static_cast<std::size_t>(foot)].v, ramp.along());
+        // Its speed as it passed the mark (the sample is up to a step beyond it), by the energy
+        // of a frictionless slide.
+        const Sample& at = samples[static_cast<std::size_t>(foot)];
+        const float u = b2Dot(at.v, ramp.along());
+        const float beyond = 1.0f - b2Dot(at.p, ramp.along());
+        out.kept = std::sqrt(std::max(0.0f, u * u - 2 * ramp.slope_gravity() * beyond));
       }
       return out;
     }
