@@ -309,14 +309,27 @@ std::vector<b2Fixture*> TileGround::fixtures() const {
 }
 
 void TileGround::build_chunk(int k) {
-  std::vector<b2Fixture*>& fixtures = chunks_[static_cast<std::size_t>(k)];
-  for (b2Fixture* f : fixtures) body_->DestroyFixture(f);
-  fixtures.clear();
   const GridLayout& g = layout_;
   const int c0 = (k % chunk_columns()) * g.chunk;
   const int r0 = (k / chunk_columns()) * g.chunk;
   const int c1 = std::min(c0 + g.chunk, g.columns);
   const int r1 = std::min(r0 + g.chunk, g.rows);
+  // Where the chunk's old fixtures lay (body frame): the chunk, and as far as its pieces reached
+  // into the next chunk.
+  b2Vec2 low(g.origin.x + g.cell * static_cast<float>(c0),
+             g.origin.y + g.cell * static_cast<float>(r0));
+  b2Vec2 high(g.origin.x + g.cell * static_cast<float>(c1),
+              g.origin.y + g.cell * static_cast<float>(r1));
+  std::vector<b2Fixture*>& fixtures = chunks_[static_cast<std::size_t>(k)];
+  for (b2Fixture* f : fixtures) {
+    const auto& shape = static_cast<const b2PolygonShape&>(*f->GetShape());
+    for (int i = 0; i < shape.m_count; ++i) {
+      low = b2Min(low, shape.m_vertices[i]);
+      high = b2Max(high, shape.m_vertices[i]);
+    }
+    body_->DestroyFixture(f);
+  }
+  fixtures.clear();
   b2FixtureDef def = def_;
   const Cells view{cells_, g.columns, g.rows};
   for (const Rectangle& r : merge(view, c0, c1, r0, r1)) {
@@ -340,19 +353,16 @@ void TileGround::build_chunk(int k) {
       fixtures.push_back(body_->CreateFixture(&def));
     }
   }
-  // The new rectangles' edge data, and again that of the fixed neighbours around the chunk
-  // (a chunk dug empty creates nothing, yet its neighbours' edges along it became outline).
+  // The new fixtures' edge data, and again that of the fixed neighbours of the old ones (a chunk
+  // dug empty creates nothing, yet its neighbours' edges along it became outline): where the old
+  // fixtures lay grown by a cell, its four corners placed in the world (the body may be turned).
   b2World& world = *body_->GetWorld();
   fix_internal_edges(world, fixtures);
-  // The chunk grown by a cell, and by two more along x where pieces reach into the next chunk, its
-  // four corners placed in the world (the body may be turned).
-  const float x0 = g.origin.x + g.cell * static_cast<float>(c0 - 3);
-  const float y0 = g.origin.y + g.cell * static_cast<float>(r0 - 1);
-  const float x1 = g.origin.x + g.cell * static_cast<float>(c1 + 3);
-  const float y1 = g.origin.y + g.cell * static_cast<float>(r1 + 1);
+  low -= b2Vec2(g.cell, g.cell);
+  high += b2Vec2(g.cell, g.cell);
   b2AABB region;
-  region.lowerBound = region.upperBound = body_->GetWorldPoint(b2Vec2(x0, y0));
-  for (const b2Vec2& corner : {b2Vec2(x1, y0), b2Vec2(x1, y1), b2Vec2(x0, y1)}) {
+  region.lowerBound = region.upperBound = body_->GetWorldPoint(low);
+  for (const b2Vec2& corner : {b2Vec2(high.x, low.y), high, b2Vec2(low.x, high.y)}) {
     const b2Vec2 p = body_->GetWorldPoint(corner);
     region.lowerBound = b2Min(region.lowerBound, p);
     region.upperBound = b2Max(region.upperBound, p);
