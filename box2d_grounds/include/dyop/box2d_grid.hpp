@@ -1,10 +1,10 @@
 #pragma once
 /// \file
-/// A tile map's cells as Box2D fixtures for the plug-in: the solid cells of each chunk merged into
-/// few rectangles (`SetAsBox` fixtures), each slope cell a triangle or trapezoid of its own, their
-/// edge data fixed (`fix_internal_edges`), and a refresh of one chunk when a cell is dug, built or
-/// changed. Part of the optional `dyop::box2d_grounds` library (it needs Box2D and the plug-in
-/// only).
+/// A tile map's cells as Box2D fixtures for the plug-in: the full cells of each chunk merged into
+/// few rectangles (`SetAsBox` fixtures), each slope cell (45° and 1:2, floors and ceilings:
+/// `TileKind`) a convex fixture of its own, their edge data fixed (`fix_internal_edges`), and a
+/// refresh of one chunk when a cell is dug, built or changed. Part of the optional
+/// `dyop::box2d_grounds` library (it needs Box2D and the plug-in only).
 ///
 ///     dyop::box2d::TileGround ground(*body, {256, 64, 0.5f, b2Vec2(0, 0)});
 ///     if (ground.set_cells(solid) != dyop::box2d::GridError::None) { /* describe(...) */ }
@@ -149,7 +149,8 @@ struct GridLayout {
 
 /// A tile map on one body. Owned by the caller (no state outside it and its body); the fixtures it
 /// makes belong to the body, which frees them with itself. Rectangles never cross a chunk's border
-/// (the internal-edge rule handles the T-junctions where they meet). Call it between steps.
+/// (the internal-edge rule handles the T-junctions where they meet); a slope's piece belongs to the
+/// chunk of its first cell and may reach two cells into the next one. Call it between steps.
 class TileGround {
  public:
   /// A ground on `body` laid out as `layout`, its fixtures made like `def` (friction, density,
@@ -162,7 +163,8 @@ class TileGround {
   GridError set_cells(const std::vector<std::uint8_t>& cells);
 
   /// Makes cell (column, row) of kind `kind` and, when its kind changed (`tile_kind` of the byte it
-  /// held), builds its chunk again (edge data refreshed there and next to it). Refused
+  /// held), builds its chunk again (and the chunk beside it where a piece across their border
+  /// changed; edge data refreshed there and next to it). Refused
   /// (`OutOfRange`, `WorldLocked`, `SlopeShape`, or a layout `set_cells` refused): nothing
   /// changes.
   GridError set_cell(int column, int row, TileKind kind);
@@ -187,8 +189,8 @@ class TileGround {
   GridError check() const;
   int chunk_columns() const;
   int chunk_rows() const;
-  // Destroys chunk `k`'s fixtures, merges its solid cells into rectangles and creates them, and
-  // creates a fixture for each of its slope cells.
+  // Destroys chunk `k`'s fixtures, merges its full cells outside pieces into rectangles and
+  // creates them, and creates a fixture for each piece starting in it.
   void build_chunk(int k);
 
   b2Body* body_;
