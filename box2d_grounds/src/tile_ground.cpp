@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "dyop/box2d.hpp"
@@ -134,7 +135,8 @@ std::vector<HalfPoint> piece_outline(const Cells& cells, int c0, int c1, int r) 
       const HalfPoint& a = p[(i + p.size() - 1) % p.size()];
       const HalfPoint& b = p[i];
       const HalfPoint& c = p[(i + 1) % p.size()];
-      const long cross = long(b.x - a.x) * (c.y - a.y) - long(b.y - a.y) * (c.x - a.x);
+      const std::int64_t cross = static_cast<std::int64_t>(b.x - a.x) * (c.y - a.y) -
+                                 static_cast<std::int64_t>(b.y - a.y) * (c.x - a.x);
       if (cross == 0) {
         p.erase(p.begin() + static_cast<std::ptrdiff_t>(i));
         dropped = true;
