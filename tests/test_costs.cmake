@@ -12,6 +12,7 @@ set(dyop_test_costs
   "^Catalogue/LinCannySkips\\..*/(rain|tumbler|tiles|tile_map)$" 1.6
   "^ConvexPairAccuracy\\.NormalIsUnit" 1.5
   "^Compare\\.TinyRunWritesTheReportTheCsvAndTheCharts$" 1.4
+  "^TileSlopes\\.EveryKindAndNeighbourhoodIsCoveredOnce" 1.3
   "^ExactBackends/SkipsInEveryScene\\..*/(rain|tumbler)_" 1.2
   "^DyopFast\\.NeverCallsAnApartPairPenetrating" 1.2
   "^Batch\\.AgreesWithSatOnEveryPairClass" 1.1

@@ -15,12 +15,13 @@
 #include "dyop/box2d.hpp"
 #include "dyop/box2d_internal_edges.hpp"
 #include "dyop/box2d_mesh.hpp"
+#include "support/level_gliders.hpp"
 #include "support/worlds.hpp"
 
 namespace dyop::box2d::testing {
 namespace {
 
-constexpr float kShapePushSpeed = 4.0f;  // m/s, frictionless
+constexpr float kShapePushSpeed = kLevelPushSpeed;  // m/s, frictionless
 constexpr float kShapeGlideSeconds = 4.0f;
 // The bounds for a glide: vertical speed after the push, and the share of the free
 // travel (speed · time) a body makes.
@@ -28,7 +29,9 @@ constexpr float kShapeGlideVertical = 0.05f;
 constexpr float kShapeGlideTravel = 0.98f;
 
 enum class ShapeGround { TriangleGrid, TriangleTiles, BoxTiles };
-enum class ShapeBody { TriangleBox, Box, Hexagon, Ball };
+using ShapeBody = LevelBody;
+// The bodies' dimensions here: boxes 0.5 m on a side, a hexagon of circumradius 0.5 m.
+constexpr GliderSize kShapeSize{0.5f, 0.5f, 0.5f, 0.3f};
 
 const char* name(ShapeGround g) {
   switch (g) {
@@ -42,7 +45,7 @@ const char* name(ShapeGround g) {
   return "";
 }
 
-const char* name(ShapeBody b) {
+const char* shape_name(ShapeBody b) {
   switch (b) {
     case ShapeBody::TriangleBox:
       return "box of two triangles";
@@ -98,44 +101,6 @@ void add_shape_ground(World& world, ShapeGround kind, float x0, float length) {
   }
 }
 
-// A frictionless body resting on y = 0 at x = 0, pushed along +x.
-b2Body* add_shape_glider(World& world, ShapeBody kind) {
-  b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(0, 0));
-  b2FixtureDef def;
-  def.friction = 0;
-  def.density = 1;
-  b2PolygonShape polygon;
-  b2CircleShape ball;
-  switch (kind) {
-    case ShapeBody::TriangleBox:
-      add_triangle(body, b2Vec2(-0.25f, 0), b2Vec2(0.25f, 0), b2Vec2(0.25f, 0.5f), kIce);
-      add_triangle(body, b2Vec2(-0.25f, 0), b2Vec2(0.25f, 0.5f), b2Vec2(-0.25f, 0.5f), kIce);
-      break;
-    case ShapeBody::Box:
-      polygon.SetAsBox(0.25f, 0.25f, b2Vec2(0, 0.25f), 0);
-      def.shape = &polygon;
-      break;
-    case ShapeBody::Hexagon: {
-      b2Vec2 points[6];
-      for (int i = 0; i < 6; ++i) {
-        const float a = 3.14159265f / 3 * i;
-        points[i] = b2Vec2(0.5f * std::cos(a), 0.5f * std::sin(a) + 0.5f * std::sqrt(0.75f));
-      }
-      polygon.Set(points, 6);
-      def.shape = &polygon;
-      break;
-    }
-    case ShapeBody::Ball:
-      ball.m_radius = 0.3f;
-      ball.m_p = b2Vec2(0, 0.3f);
-      def.shape = &ball;
-      break;
-  }
-  if (def.shape) body->CreateFixture(&def);
-  body->SetLinearVelocity(b2Vec2(kShapePushSpeed, 0));
-  return body;
-}
-
 struct ShapeGlide {
   float max_vertical = 0;  // largest |vy| after the first step, m/s
   float travel = 0;        // share of the free travel speed · time
@@ -144,7 +109,7 @@ struct ShapeGlide {
 ShapeGlide shape_glide(ShapeGround ground, ShapeBody body) {
   World world;
   add_shape_ground(world, ground, -2.0f, kShapePushSpeed * kShapeGlideSeconds + 4.0f);
-  b2Body* glider = add_shape_glider(world, body);
+  b2Body* glider = add_level_glider(world, body, true, kShapeSize);
   ShapeGlide g;
   const int steps = static_cast<int>(kShapeGlideSeconds * kStepsPerSecond);
   for (int step = 0; step < steps; ++step) {
@@ -172,7 +137,7 @@ TEST_P(EverydayShapes, GlideWithoutGhostCollisionsWhereBox2DsOwnContactTrips) {
   const Stats s = stats();
   ASSERT_TRUE(uninstall().ok());
   std::printf("%s on %s: plug-in %.3f m/s, %.1f %% of the glide; Box2D's own %.3f m/s, %.1f %%\n",
-              name(c.body), name(c.ground), g.max_vertical, 100 * g.travel, own.max_vertical,
+              shape_name(c.body), name(c.ground), g.max_vertical, 100 * g.travel, own.max_vertical,
               100 * own.travel);
   EXPECT_LE(g.max_vertical, kShapeGlideVertical);
   EXPECT_GE(g.travel, kShapeGlideTravel);
@@ -232,8 +197,8 @@ TEST(EverydayShapesBox2DBackend, IsBox2DsOwnContactBitForBit) {
     const ShapeGlide g = shape_glide(ShapeGround::BoxTiles, b);
     const Stats s = stats();
     ASSERT_TRUE(uninstall().ok());
-    EXPECT_EQ(g.max_vertical, own.max_vertical) << name(b);
-    EXPECT_EQ(g.travel, own.travel) << name(b);
+    EXPECT_EQ(g.max_vertical, own.max_vertical) << shape_name(b);
+    EXPECT_EQ(g.travel, own.travel) << shape_name(b);
     EXPECT_EQ(s.exact_pairs, 0u);
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
-// The bodies of a game the bridge's tests push along level grounds (chains, edges, triangulated
-// outlines, terrains in chunks), where they start, and the bounds of a glide.
+// The everyday bodies of a game as frictionless gliders — a box of two triangle fixtures, a
+// `SetAsBox` box, a hexagon and a ball — where they start, and the bounds of a glide without ghost
+// collisions: for the tests of grounds made of chains, edges, tile maps, outlines and terrains.
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,8 @@ namespace dyop::box2d::testing {
 
 inline constexpr float kLevelPushSpeed = 4.0f;  // m/s, frictionless
 inline constexpr float kLevelGlideSeconds = 4.0f;
-// The bounds of a glide: vertical speed after the push (m/s), and the share of the free travel
-// (speed · time) a body makes.
+// The bounds of a glide: the largest speed normal to the ground once settled (m/s), and the share
+// of the frictionless travel a body makes.
 inline constexpr float kLevelGlideVertical = 0.01f;
 inline constexpr float kLevelGlideTravel = 0.99f;
 
@@ -36,9 +37,22 @@ inline const char* name(LevelBody b) {
   return "";
 }
 
-// A frictionless body resting on y = 0 at x = 0 (hanging from it when not `up`), pushed along +x.
-inline b2Body* add_level_glider(World& world, LevelBody kind, bool up = true) {
+// A glider's dimensions (metres): the boxes' width and height, the hexagon's circumradius (a face
+// at the bottom), the ball's radius.
+struct GliderSize {
+  float width = 0.8f;
+  float height = 0.6f;
+  float hexagon = 0.35f;
+  float ball = 0.3f;
+};
+
+// A frictionless body of `size` resting on y = 0 at x = 0 (hanging from it when not `up`), pushed
+// along +x at `kLevelPushSpeed`: its body origin is the middle of its flat bottom (the point a ball
+// touches the ground at).
+inline b2Body* add_level_glider(World& world, LevelBody kind, bool up = true,
+                                const GliderSize& size = {}) {
   const float side = up ? 1.0f : -1.0f;
+  const float w = 0.5f * size.width, h = size.height, r = size.hexagon;
   b2Body* body = add_body(world, b2_dynamicBody, b2Vec2(0, 0));
   b2FixtureDef def;
   def.friction = 0;
@@ -47,27 +61,26 @@ inline b2Body* add_level_glider(World& world, LevelBody kind, bool up = true) {
   b2CircleShape ball;
   switch (kind) {
     case LevelBody::TriangleBox:
-      add_triangle(body, b2Vec2(-0.4f, 0), b2Vec2(0.4f, 0), b2Vec2(0.4f, side * 0.6f), kIce);
-      add_triangle(body, b2Vec2(-0.4f, 0), b2Vec2(0.4f, side * 0.6f), b2Vec2(-0.4f, side * 0.6f),
-                   kIce);
+      add_triangle(body, b2Vec2(-w, 0), b2Vec2(w, 0), b2Vec2(w, side * h), kIce);
+      add_triangle(body, b2Vec2(-w, 0), b2Vec2(w, side * h), b2Vec2(-w, side * h), kIce);
       break;
     case LevelBody::Box:
-      polygon.SetAsBox(0.4f, 0.3f, b2Vec2(0, side * 0.3f), 0);
+      polygon.SetAsBox(w, 0.5f * h, b2Vec2(0, side * 0.5f * h), 0);
       def.shape = &polygon;
       break;
     case LevelBody::Hexagon: {
       b2Vec2 points[6];
       for (int i = 0; i < 6; ++i) {
         const float a = 3.14159265f / 3 * i;
-        points[i] = b2Vec2(0.35f * std::cos(a), side * (0.35f * std::sin(a) + 0.35f * 0.8660254f));
+        points[i] = b2Vec2(r * std::cos(a), side * (r * std::sin(a) + r * 0.8660254f));
       }
       polygon.Set(points, 6);
       def.shape = &polygon;
       break;
     }
     case LevelBody::Ball:
-      ball.m_radius = 0.3f;
-      ball.m_p = b2Vec2(0, side * 0.3f);
+      ball.m_radius = size.ball;
+      ball.m_p = b2Vec2(0, side * size.ball);
       def.shape = &ball;
       break;
   }
