@@ -586,6 +586,7 @@ TerrainStream run_terrain_stream(const TerrainTiming& timing, const box2d::Confi
   out.bodies_mean = tally.bodies / samples;
   out.fixtures_mean = tally.fixtures / samples;
   out.proxies_mean = tally.proxies / samples;
+  out.load_calls = static_cast<std::int64_t>(tally.loads.size());
   out.load_ms_median = scenes::median(tally.loads);
   out.load_ms_max = *std::max_element(tally.loads.begin(), tally.loads.end());
   const double mean_fixtures = tally.terrain_fixtures / samples;

@@ -162,7 +162,8 @@ struct TerrainStream {
   /// body's own included) and the loaded chunks, largest and mean.
   int loaded_max = 0, bodies_max = 0, fixtures_max = 0, proxies_max = 0;
   double loaded_mean = 0, bodies_mean = 0, fixtures_mean = 0, proxies_mean = 0;
-  double load_ms_median = 0, load_ms_max = 0;  ///< the `load` calls, wall time
+  std::int64_t load_calls = 0;                 ///< `load` calls timed
+  double load_ms_median = 0, load_ms_max = 0;  ///< their wall time
   /// The undulating outline as Box2D's chain loop and through `add_outline`, whole in a world;
   /// the terrain with every chunk loaded; streamed, mean and largest over the runs.
   std::vector<TerrainMemory> memory;

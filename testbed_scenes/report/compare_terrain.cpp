@@ -30,10 +30,9 @@ double largest(const std::vector<double>& v) {
 }
 
 // Each edit's figure `of`.
-template <class Of>
-std::vector<double> of_edits(const TerrainCraters& c, Of of) {
+std::vector<double> of_edits(const TerrainCraters& c, double TerrainEdit::*of) {
   std::vector<double> v;
-  for (const TerrainEdit& e : c.edits) v.push_back(of(e));
+  for (const TerrainEdit& e : c.edits) v.push_back(e.*of);
   return v;
 }
 
@@ -87,7 +86,7 @@ class TerrainSection : public CompareSection {
     out << "\nA chunked terrain (OutlineTerrain) under a crowd, craters dug over "
         << fmt("%.0f", timing_.crater_steps / 60.0) << " s (plug-in installed):\n\n";
     timing_records().write_table(out);
-    out << '\n';
+    out << step_ratios() << '\n';
     check_records().write_table(out);
     out << "\nBodies sliding " << fmt("%.0f", stream_.distance)
         << " m across levels streamed around them:\n\n";
@@ -133,20 +132,20 @@ class TerrainSection : public CompareSection {
       << fmt("%.0f", timing_.crater_steps / 60.0)
       << " s, one every 0.25 s: under a resting body, beside one (the rim 0.5 m from its side), "
          "or 3 m ahead of a pushed one; "
-      << craters_.runs
-      << " run(s), timings pooled. Times: the `remove` call and each `Step`, wall clock and this "
+      << craters_.runs << (craters_.runs == 1 ? " scene" : " scenes, timings pooled")
+      << ". Times: the `remove` call and each `Step`, wall clock and this "
          "thread's CPU time (a call preempted on a shared machine shows a long wall time and a "
          "short CPU time). Checks after every step: a body's centre inside the ground "
          "(`OutlineTerrain::solid`), the deepest overlap of a body's skin with the ground (Box2D "
          "keeps about 5 mm, `b2_linearSlop`), and, for every body resting when an edit is made "
          "(speed ≤ "
-      << fmt("%g", experiments::resting_speed)
-      << " m/s), its largest vertical speed until the next edit, unless another body struck it; "
+      << fmt("%g", experiments::resting_speed) << " m/s for the last " << experiments::resting_steps
+      << " steps), its largest vertical speed until the next edit, unless another body struck it; "
          "far: "
       << fmt("%g", experiments::far_from_edit)
       << " m or more between the rim and its side (expected ≤ 0.01 m/s).\n\n";
     timing_records().write_markdown(o);
-    o << '\n';
+    o << '\n' << step_ratios() << '\n';
     check_records().write_markdown(o);
     o << "\nEvery crater: `terrain_edits.csv`. Step by step in a browser: [the craters appearing "
          "under the crowd]("
@@ -202,6 +201,15 @@ class TerrainSection : public CompareSection {
  private:
   static std::string page_file() { return viewer_page_file(experiments::terrain_recording_name); }
 
+  // The step after an edit over the median step without one (wall): its median and largest.
+  std::string step_ratios() const {
+    const std::vector<double> after = of_edits(craters_, &TerrainEdit::step_ms);
+    const double plain = scenes::median(craters_.plain_step_ms);
+    return "The `Step` after an edit over the median `Step` without one (wall): median " +
+           fmt("%.2f", scenes::median(after) / plain) + "×, largest " +
+           fmt("%.2f", largest(after) / plain) + "×.\n";
+  }
+
   Records edit_records() const {
     Records out({{"run", "", "", 3},
                  {"step", "", "", 5},
@@ -235,7 +243,7 @@ class TerrainSection : public CompareSection {
 
   Records timing_records() const {
     Records out({{"part", "part", "", -10},
-                 {"what", "what", "", -34},
+                 {"what", "what", "", -40},
                  {"count", "count", "", 6},
                  {"median_ms", "median (ms)", "", 8},
                  {"largest_ms", "largest (ms)", "", 8}});
@@ -243,24 +251,14 @@ class TerrainSection : public CompareSection {
       out.add({Value::text(part), Value::text(what), Value::count(static_cast<int>(v.size())),
                Value::number(scenes::median(v), "%.3f"), Value::number(largest(v), "%.3f")});
     };
-    const std::vector<double> after =
-        of_edits(craters_, [](const TerrainEdit& e) { return e.step_ms; });
-    const std::vector<double> after_cpu =
-        of_edits(craters_, [](const TerrainEdit& e) { return e.step_cpu_ms; });
-    row("craters", "edit call (`remove`), wall",
-        of_edits(craters_, [](const TerrainEdit& e) { return e.edit_ms; }));
-    row("craters", "edit call (`remove`), CPU",
-        of_edits(craters_, [](const TerrainEdit& e) { return e.edit_cpu_ms; }));
-    row("craters", "`Step` after an edit, wall", after);
-    row("craters", "`Step` after an edit, CPU", after_cpu);
+    row("craters", "edit call (`remove`), wall", of_edits(craters_, &TerrainEdit::edit_ms));
+    row("craters", "edit call (`remove`), CPU", of_edits(craters_, &TerrainEdit::edit_cpu_ms));
+    row("craters", "`Step` after an edit, wall", of_edits(craters_, &TerrainEdit::step_ms));
+    row("craters", "`Step` after an edit, CPU", of_edits(craters_, &TerrainEdit::step_cpu_ms));
     row("craters", "`Step` without an edit before it, wall", craters_.plain_step_ms);
     row("craters", "`Step` without an edit before it, CPU", craters_.plain_step_cpu_ms);
-    out.add({Value::text("craters"), Value::text("step after an edit over steps without one"),
-             Value::count(static_cast<int>(after.size())),
-             Value::number(scenes::median(after) / scenes::median(craters_.plain_step_ms), "%.2f×"),
-             Value::number(largest(after) / scenes::median(craters_.plain_step_ms), "%.2f×")});
     out.add({Value::text("streaming"), Value::text("`load(region)` after each step, wall"),
-             Value::count(stream_.steps), Value::number(stream_.load_ms_median, "%.4f"),
+             Value::count(stream_.load_calls), Value::number(stream_.load_ms_median, "%.4f"),
              Value::number(stream_.load_ms_max, "%.3f")});
     return out;
   }
