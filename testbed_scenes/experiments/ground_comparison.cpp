@@ -10,6 +10,8 @@
 #include <stdexcept>
 
 #include "dyop/box2d_grid.hpp"
+#include "experiments/everyday_bodies.hpp"
+#include "experiments/ground_measures.hpp"
 #include "level_outline.hpp"  // examples/: the 300 m outline level
 #include "scenes/installation.hpp"
 #include "scenes/metrics.hpp"
@@ -67,38 +69,6 @@ std::vector<Ring> flat_rings() {
   for (int i = 240; i >= 0; --i) ring.push_back({0.25f * static_cast<float>(i), 0});
   return {ring};
 }
-
-double signed_area(const Ring& ring) {
-  double a = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const b2Vec2& p = ring[i];
-    const b2Vec2& q = ring[(i + 1) % ring.size()];
-    a += static_cast<double>(p.x) * q.y - static_cast<double>(q.x) * p.y;
-  }
-  return a / 2;
-}
-
-// `rings` as chain loops: the outline counter-clockwise, its holes clockwise (solid on the left).
-std::vector<Ring> chain_loops_of(std::vector<Ring> rings) {
-  for (std::size_t i = 0; i < rings.size(); ++i) {
-    if ((signed_area(rings[i]) > 0) != (i == 0)) std::reverse(rings[i].begin(), rings[i].end());
-  }
-  return rings;
-}
-
-double boundary_length(const std::vector<Ring>& loops) {
-  double length = 0;
-  for (const Ring& ring : loops) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      length += b2Distance(ring[i], ring[(i + 1) % ring.size()]);
-    }
-  }
-  return length;
-}
-
-// Bytes of one broad-phase proxy: the fixture's proxy record and its tree leaf, with an inner node
-// amortised per leaf.
-constexpr std::size_t kPerProxy = sizeof(b2FixtureProxy) + 2 * sizeof(b2TreeNode);
 
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
@@ -158,8 +128,7 @@ class Built {
         }
       }
       proxies = fixtures();
-      bytes = static_cast<double>(fixtures_.size() *
-                                  (sizeof(b2Fixture) + sizeof(b2EdgeShape) + kPerProxy));
+      bytes = fixtures_bytes<b2EdgeShape>(fixtures_.size());
       return;
     }
     if (build_ == GroundBuild::Chain) {
@@ -168,9 +137,7 @@ class Built {
         chain.CreateLoop(loop.data(), static_cast<int>(loop.size()));
         fixtures_.push_back(ground_->CreateFixture(&chain, 0));
         proxies += chain.GetChildCount();
-        bytes += static_cast<double>(sizeof(b2Fixture) + sizeof(b2ChainShape) +
-                                     (loop.size() + 1) * sizeof(b2Vec2) +
-                                     static_cast<std::size_t>(chain.GetChildCount()) * kPerProxy);
+        bytes += chain_bytes(chain);
       }
       return;
     }
@@ -191,8 +158,7 @@ class Built {
 #endif
     }
     proxies = fixtures();
-    bytes = static_cast<double>(fixtures_.size() *
-                                (sizeof(b2Fixture) + sizeof(b2PolygonShape) + kPerProxy));
+    bytes = fixtures_bytes<b2PolygonShape>(fixtures_.size());
   }
 
   void clear() {
@@ -211,57 +177,12 @@ class Built {
   std::vector<b2Fixture*> fixtures_;
 };
 
-// The everyday bodies: a `SetAsBox` box, a hexagon, a ball and a box of two triangle fixtures.
-struct Shapes {
-  b2PolygonShape box;
-  b2PolygonShape hexagon;
-  b2CircleShape ball;
-  Shapes() {
-    box.SetAsBox(0.25f, 0.3f);
-    b2Vec2 v[6];
-    for (int i = 0; i < 6; ++i) {
-      const float a = static_cast<float>(i) * b2_pi / 3;
-      v[i] = {0.3f * std::cos(a), 0.3f * std::sin(a)};
-    }
-    hexagon.Set(v, 6);
-    ball.m_radius = 0.3f;
-  }
-  // Each body's name and shape; nullptr: the box of two triangles (half-size 0.3 m).
-  std::vector<std::pair<const char*, const b2Shape*>> all() const {
-    return {{"`SetAsBox` box", &box},
-            {"hexagon", &hexagon},
-            {"ball", &ball},
-            {"box of 2 triangles", nullptr}};
-  }
-};
-
-// A dynamic body at `at` with one fixture of `shape` (density 1), or, for nullptr, a box of two
-// triangle fixtures of half-size 0.3 m.
-b2Body* add_dynamic(worlds::World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
-  if (!shape) return worlds::add_split_box(world, at, 0.3f, worlds::Material{1, friction});
-  b2Body* body = worlds::add_body(world, b2_dynamicBody, at);
-  b2FixtureDef fixture;
-  fixture.shape = shape;
-  fixture.density = 1;
-  fixture.friction = friction;
-  body->CreateFixture(&fixture);
-  return body;
-}
-
-// The height at which `shape`'s lowest point rests on y = 0 (nullptr: the box of triangles).
-float resting_height(const b2Shape* shape) {
-  if (!shape) return 0.3f;
-  b2AABB box;
-  shape->ComputeAABB(&box, b2Transform(b2Vec2(0, 0), b2Rot(0)), 0);
-  return -box.lowerBound.y;
-}
-
 // Bodies of one measurement pass through each other (one negative group): each meets the ground
 // alone, as in a world of its own.
 constexpr int16 kApart = -1;
 
 b2Body* add_apart(worlds::World& world, const b2Shape* shape, const b2Vec2& at, float friction) {
-  b2Body* body = add_dynamic(world, shape, at, friction);
+  b2Body* body = add_everyday_body(world, shape, at, friction);
   for (b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext()) {
     b2Filter filter = f->GetFilterData();
     filter.groupIndex = kApart;
@@ -271,7 +192,7 @@ b2Body* add_apart(worlds::World& world, const b2Shape* shape, const b2Vec2& at, 
 }
 
 // The glides' bodies, resting on the flat stretch at x = 2 m and pushed at kPush.
-std::vector<b2Body*> add_gliders(worlds::World& world, const Shapes& shapes) {
+std::vector<b2Body*> add_gliders(worlds::World& world, const EverydayShapes& shapes) {
   std::vector<b2Body*> bodies;
   for (const auto& entry : shapes.all()) {
     const b2Shape* shape = entry.second;
@@ -282,7 +203,7 @@ std::vector<b2Body*> add_gliders(worlds::World& world, const Shapes& shapes) {
 }
 
 // A placement trial's kPlacedBoxes boxes, centres at height `y` moving down at `speed`.
-std::vector<b2Body*> add_placed_boxes(worlds::World& world, const Shapes& shapes, float y,
+std::vector<b2Body*> add_placed_boxes(worlds::World& world, const EverydayShapes& shapes, float y,
                                       float speed) {
   std::vector<b2Body*> boxes;
   for (int k = 0; k < kPlacedBoxes; ++k) {
@@ -293,7 +214,7 @@ std::vector<b2Body*> add_placed_boxes(worlds::World& world, const Shapes& shapes
   return boxes;
 }
 
-std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
+std::vector<GroundGlide> glides(Built& built, const EverydayShapes& shapes) {
   const std::vector<b2Body*> bodies = add_gliders(built.world, shapes);
   std::vector<double> vertical(bodies.size(), 0);
   for (int i = 0; i < kGlideSteps; ++i) {
@@ -310,7 +231,7 @@ std::vector<GroundGlide> glides(Built& built, const Shapes& shapes) {
   return out;
 }
 
-std::vector<GroundPlacement> placements(Built& built, const Shapes& shapes) {
+std::vector<GroundPlacement> placements(Built& built, const EverydayShapes& shapes) {
   struct Trial {
     const char* label;
     float y;      // the centre's start height (0.3: resting on the top)
@@ -351,15 +272,15 @@ std::pair<float, float> crowd_span(GroundLevel level) {
 
 // The crowd's narrow phase and step (ms, summed over its steps) on `built`.
 std::pair<double, double> crowd(Built& built, GroundLevel level, const GroundTiming& timing,
-                                const Shapes& shapes) {
+                                const EverydayShapes& shapes) {
   const auto [length, height] = crowd_span(level);
   const auto all = shapes.all();
   const int per_row = static_cast<int>((length - 2) / 0.85f);
   for (int k = 0; k < timing.bodies; ++k) {
-    add_dynamic(built.world, all[static_cast<std::size_t>(k) % all.size()].second,
-                {1 + 0.85f * static_cast<float>(k % per_row),
-                 height + 0.9f * static_cast<float>(k / per_row)},
-                0.6f);
+    add_everyday_body(built.world, all[static_cast<std::size_t>(k) % all.size()].second,
+                      {1 + 0.85f * static_cast<float>(k % per_row),
+                       height + 0.9f * static_cast<float>(k / per_row)},
+                      0.6f);
   }
   double collide = 0, step = 0;
   for (int i = 0; i < timing.steps; ++i) {
@@ -496,7 +417,7 @@ std::array<GroundRun, ground_way_count> compare_ground(GroundLevel level,
     throw std::runtime_error(std::string("grounds: no builder for level ") + name(level) +
                              " in this build (dyop::box2d_outlines needs GEOS)");
   }
-  const Shapes shapes;
+  const EverydayShapes shapes;
   std::array<GroundRun, ground_way_count> out;
   std::array<std::vector<double>, ground_way_count> builds, collide, step;
   for (std::size_t w = 0; w < ground_ways.size(); ++w) {
@@ -552,7 +473,7 @@ LockstepRecording record_ground(GroundLevel level, const std::array<scenes::Runn
     throw std::runtime_error(std::string("grounds: no builder for level ") + name(level) +
                              " in this build (dyop::box2d_outlines needs GEOS)");
   }
-  const Shapes shapes;
+  const EverydayShapes shapes;
   return record_sides(ground_recording_name(level), runners, steps, configs, [&](int side) {
     auto built =
         std::make_shared<Built>(level, side == 0 ? GroundBuild::Chain : GroundBuild::Builder);

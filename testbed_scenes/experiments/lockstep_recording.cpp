@@ -145,36 +145,85 @@ struct WorldIndex {
   int of(const b2Fixture* f, int child) const { return fixture.at(f) + child; }
 };
 
-WorldIndex index_of(const scenes::World& world) {
+// Adds fixture `f` of body `body` to `index`, a chain as its children, from frame `appears` on.
+void add_fixture(WorldIndex& index, int body, const b2Fixture* f, int appears) {
+  index.fixture[f] = static_cast<int>(index.fixtures.size());
+  if (f->GetType() != b2Shape::e_chain) {
+    index.fixtures.push_back(fixture_of(body, *f->GetShape()));
+    index.fixtures.back().appears = appears;
+    return;
+  }
+  const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
+  for (int child = 0; child < chain->GetChildCount(); ++child) {
+    b2EdgeShape edge;
+    chain->GetChildEdge(&edge, child);
+    index.fixtures.push_back(segment_of(body, edge));
+    index.fixtures.back().appears = appears;
+  }
+}
+
+WorldIndex index_of(const std::vector<b2Body*>& bodies) {
   WorldIndex index;
-  for (const b2Body* b : world.bodies()) {
+  for (const b2Body* b : bodies) {
     const int body = static_cast<int>(index.roles.size());
     index.body[b] = body;
     index.roles.push_back(role_of(*b));
     for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
-      index.fixture[f] = static_cast<int>(index.fixtures.size());
-      if (f->GetType() != b2Shape::e_chain) {
-        index.fixtures.push_back(fixture_of(body, *f->GetShape()));
-        continue;
-      }
-      const auto* chain = static_cast<const b2ChainShape*>(f->GetShape());
-      for (int child = 0; child < chain->GetChildCount(); ++child) {
-        b2EdgeShape edge;
-        chain->GetChildEdge(&edge, child);
-        index.fixtures.push_back(segment_of(body, edge));
-      }
+      add_fixture(index, body, f, 0);
     }
   }
   return index;
 }
 
-// `world`, its runner installed, stepped `steps` times: its frames, bodies and fixtures by `index`.
-std::vector<ViewFrame> record_steps(scenes::World& world, const scenes::Runner& runner, int steps,
-                                    const WorldIndex& index) {
-  const std::vector<b2Body*>& bodies = world.bodies();
+bool same_fixture(const ViewFixture& x, const ViewFixture& y) {
+  return x.body == y.body && x.kind == y.kind && x.radius == y.radius && x.appears == y.appears &&
+         x.disappears == y.disappears &&
+         std::equal(x.points.begin(), x.points.end(), y.points.begin(), y.points.end(),
+                    [](const b2Vec2& p, const b2Vec2& q) { return p.x == q.x && p.y == q.y; });
+}
+
+// After an edit before frame `step`: the fixtures gone from `bodies`, or whose shape changed (a
+// new fixture at a freed address), end at `step`; those new take the next indices from it on.
+void reindex(WorldIndex& index, const std::vector<b2Body*>& bodies, int step) {
+  std::unordered_map<const b2Fixture*, int> live;
+  for (const b2Body* b : bodies) {
+    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+      live[f] = index.body.at(b);
+    }
+  }
+  for (auto it = index.fixture.begin(); it != index.fixture.end();) {
+    ViewFixture& was = index.fixtures[static_cast<std::size_t>(it->second)];
+    const auto found = live.find(it->first);
+    ViewFixture now;
+    if (found != live.end() && it->first->GetType() != b2Shape::e_chain) {
+      now = fixture_of(found->second, *it->first->GetShape());
+      now.appears = was.appears;
+    }
+    if (found == live.end() ||
+        (it->first->GetType() != b2Shape::e_chain && !same_fixture(now, was))) {
+      was.disappears = step;
+      it = index.fixture.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  for (const b2Body* b : bodies) {
+    for (const b2Fixture* f = b->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+      if (index.fixture.count(f) == 0) add_fixture(index, index.body.at(b), f, step);
+    }
+  }
+}
+
+// `world`, its runner installed, stepped `steps` times: its frames, `bodies` and their fixtures
+// by `index`; `before_step`, when given, is called before each step and `index` follows the
+// fixtures it changes.
+std::vector<ViewFrame> record_steps(scenes::World& world, const std::vector<b2Body*>& bodies,
+                                    const scenes::Runner& runner, int steps, WorldIndex& index,
+                                    const std::function<bool(int)>& before_step = {}) {
   std::vector<b2Transform> before(bodies.size());
   std::vector<ViewFrame> frames;
   for (int step = 0; step < steps; ++step) {
+    if (before_step && before_step(step)) reindex(index, bodies, step);
     for (std::size_t i = 0; i < bodies.size(); ++i) before[i] = bodies[i]->GetTransform();
     world.step();
     ViewFrame frame;
@@ -218,7 +267,7 @@ std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::C
                                     LockstepRecording& out) {
   const scenes::Installation installed(runner, config);
   scenes::SceneWorld scene(out.scene, out.seed);
-  WorldIndex index = index_of(scene.world());
+  WorldIndex index = index_of(scene.world().bodies());
   if (out.bodies.empty()) {
     out.bodies = index.roles;
     out.fixtures = index.fixtures;
@@ -226,7 +275,7 @@ std::vector<ViewFrame> record_world(const scenes::Runner& runner, const box2d::C
              index.fixtures.size() != out.fixtures.size()) {
     throw std::logic_error("the two runners' worlds of '" + out.scene + "' differ in bodies");
   }
-  return record_steps(scene.world(), runner, out.steps, index);
+  return record_steps(scene.world(), scene.world().bodies(), runner, out.steps, index);
 }
 
 // The paper's triangles on their paths: one kinematic body each, their overlapping pairs handed
@@ -369,11 +418,11 @@ LockstepRecording record_sides(std::string name, const std::array<scenes::Runner
     if (!w.world || w.own_bodies < 0 || w.own_bodies > static_cast<int>(w.world->bodies().size())) {
       throw std::logic_error("record_sides: side " + std::to_string(side) + " built no world");
     }
-    index[side] = index_of(*w.world);
+    index[side] = index_of(w.world->bodies());
     own_bodies[side] = w.own_bodies;
     own_fixtures[side] = 0;
     for (const ViewFixture& f : index[side].fixtures) own_fixtures[side] += f.body < w.own_bodies;
-    out.frames[side] = record_steps(*w.world, runners[side], steps, index[side]);
+    out.frames[side] = record_steps(*w.world, w.world->bodies(), runners[side], steps, index[side]);
   }
   // The layout: A's own bodies and fixtures, B's, then the shared ones (A's and B's alike).
   // `place(own, side, i)`: where side `side`'s item `i` goes, `own` counting each side's own items.
@@ -427,6 +476,34 @@ LockstepRecording record_sides(std::string name, const std::array<scenes::Runner
       sort_contacts(frame);
     }
   }
+  agree_frames(out);
+  return out;
+}
+
+LockstepRecording record_edited(std::string name, const std::array<scenes::Runner, 2>& runners,
+                                int steps, const std::array<box2d::Config, 2>& configs,
+                                const std::function<EditedWorld(int side)>& build) {
+  LockstepRecording out =
+      empty_recording(std::move(name), runners, steps, configs, double(scenes::time_step));
+  std::array<WorldIndex, 2> index;
+  for (int side = 0; side < 2; ++side) {
+    const scenes::Installation installed(runners[side], configs[side]);
+    const EditedWorld w = build(side);
+    if (!w.world || w.bodies.empty()) {
+      throw std::logic_error("record_edited: side " + std::to_string(side) + " built no world");
+    }
+    index[side] = index_of(w.bodies);
+    out.frames[side] =
+        record_steps(*w.world, w.bodies, runners[side], steps, index[side], w.before_step);
+  }
+  const std::vector<ViewFixture>& a = index[0].fixtures;
+  const std::vector<ViewFixture>& b = index[1].fixtures;
+  if (index[0].roles != index[1].roles || a.size() != b.size() ||
+      !std::equal(a.begin(), a.end(), b.begin(), same_fixture)) {
+    throw std::logic_error("record_edited: the two sides' worlds made different fixtures");
+  }
+  out.bodies = index[0].roles;
+  out.fixtures = a;
   agree_frames(out);
   return out;
 }

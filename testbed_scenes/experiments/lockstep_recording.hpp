@@ -56,6 +56,11 @@ struct ViewFixture {
   /// Whose world holds it: -1 both runners' (a scene), 0 or 1 runner A's or B's alone (a level
   /// built two ways: `record_sides`), drawn on that runner's side only.
   int side = -1;
+  /// The frames it is in (frame i: the world after step i + 1): from `appears` to before
+  /// `disappears` (-1: to the last). Only a ground edited while it is recorded (`record_edited`)
+  /// has fixtures that come and go.
+  int appears = 0;
+  int disappears = -1;
 };
 
 /// Where a body is after a step.
@@ -153,6 +158,30 @@ struct SideWorld {
 LockstepRecording record_sides(std::string name, const std::array<scenes::Runner, 2>& runners,
                                int steps, const std::array<box2d::Config, 2>& configs,
                                const std::function<SideWorld(int side)>& build);
+
+/// A world whose ground is edited while it is recorded, for `record_edited`: `bodies` every body
+/// drawn (the ground's and the moving ones, in that order; none is created or destroyed while it
+/// runs); `before_step(step)` called before step `step` (0-based) edits the ground and may push
+/// bodies, true when it changed fixtures. `owner` keeps the world and its ground alive while it is
+/// recorded.
+struct EditedWorld {
+  std::shared_ptr<void> owner;
+  scenes::World* world = nullptr;
+  std::vector<b2Body*> bodies;
+  std::function<bool(int step)> before_step;
+};
+
+/// Records one world whose ground changes between steps (`dyop compare`'s terrain section: craters
+/// dug under a crowd), built by `build(side)` under `runners[side]` with `configs[side]` and
+/// stepped `steps` (≥ 1) times. A fixture an edit destroyed (or whose shape it changed) ends there
+/// (`ViewFixture::disappears`); one it created takes the next index (`ViewFixture::appears`), in
+/// body order, then each body's fixture-list order. Both sides must make the same fixtures at the
+/// same steps: edits that depend on nothing the runner changes. Throws `std::invalid_argument` for
+/// `steps` < 1 and `std::logic_error` when a side builds no world or the two sides' fixtures
+/// differ.
+LockstepRecording record_edited(std::string name, const std::array<scenes::Runner, 2>& runners,
+                                int steps, const std::array<box2d::Config, 2>& configs,
+                                const std::function<EditedWorld(int side)>& build);
 
 /// Records scene `name` of the catalogue for `steps` steps (≥ 1) under `runners[0]` with
 /// `configs[0]` and then `runners[1]` with `configs[1]` (the same runner twice with two configs

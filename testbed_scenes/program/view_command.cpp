@@ -16,6 +16,7 @@
 
 #include "experiments/ground_comparison.hpp"
 #include "experiments/lockstep_recording.hpp"
+#include "experiments/terrain_runs.hpp"
 #include "program/commands.hpp"
 #include "report/format.hpp"
 #include "report/output.hpp"
@@ -72,7 +73,9 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
   const SceneInfo* info = find_scene(c.scene);
   const std::optional<experiments::GroundLevel> level =
       experiments::ground_level_of_recording(c.scene);
-  if (info == nullptr && !level) {
+  const bool craters =
+      c.scene == experiments::terrain_recording_name && experiments::terrain_available();
+  if (info == nullptr && !level && !craters) {
     err << "dyop view: unknown scene '" << c.scene << "'\n";
     return exit_usage_error;
   }
@@ -148,10 +151,14 @@ int run_view_command(const ViewCommand& c, std::ostream& out, std::ostream& err)
   experiments::LockstepRecording recording;
   try {
     recording =
-        level ? experiments::record_ground(
-                    *level, runners, c.steps.value_or(experiments::ground_recording_steps), configs)
-              : experiments::record_lockstep(
-                    c.scene, runners, c.steps.value_or(info->default_steps), c.seed, configs);
+        craters ? experiments::record_terrain_craters(
+                      runners, c.steps.value_or(experiments::TerrainTiming{}.crater_steps), configs,
+                      c.seed)
+        : level
+            ? experiments::record_ground(
+                  *level, runners, c.steps.value_or(experiments::ground_recording_steps), configs)
+            : experiments::record_lockstep(c.scene, runners, c.steps.value_or(info->default_steps),
+                                           c.seed, configs);
     report::write_viewer_page(recording, html.stream());
   } catch (const std::exception& e) {
     err << "dyop view: " << c.scene << " could not run: " << e.what() << '\n';
@@ -181,13 +188,15 @@ void add_view_command(CLI::App& app, int& exit_code) {
       names.push_back(experiments::ground_recording_name(level));
     }
   }
+  if (experiments::terrain_available()) names.push_back(experiments::terrain_recording_name);
   CLI::App* cmd = app.add_subcommand(
       "view",
       "Record one scene under two runners and write one self-contained HTML page that plays "
       "them back side by side or overlaid, with their contacts (open it in a browser)");
   cmd->add_option("name", args->scene,
                   "Scene, or a level of the grounds comparison (grounds-LEVEL: A the level as "
-                  "Box2D's chains, B through the plug-in's builders)")
+                  "Box2D's chains, B through the plug-in's builders), or terrain-craters (the "
+                  "terrain section's craters dug under a crowd, 600 steps by default)")
       ->required()
       ->check(CLI::IsMember(names));
   cmd->add_option("--runner,-r", args->runners,

@@ -7,7 +7,9 @@
 /// and writes one self-contained HTML page that plays them back side by side
 /// (`report/viewer_page.hpp`). SCENE may also be a level of the grounds comparison,
 /// `grounds-flat`, `grounds-tile-grid` or `grounds-outline` (`experiments::record_ground`): A's
-/// world the level as Box2D's chains, B's through the plug-in's builders, the same bodies on both.
+/// world the level as Box2D's chains, B's through the plug-in's builders, the same bodies on both;
+/// or `terrain-craters` (`experiments::record_terrain_craters`: craters dug under a crowd on a
+/// chunked terrain, 600 steps by default).
 /// The command line (CLI11, `add_view_command`) validates names; this checks them again, checks
 /// files and runs.
 
@@ -20,7 +22,8 @@
 namespace dyop::cli {
 
 struct ViewCommand {
-  /// A name of `scenes::scene_catalog()`, or `experiments::ground_recording_name` of a level.
+  /// A name of `scenes::scene_catalog()`, `experiments::ground_recording_name` of a level, or
+  /// `experiments::terrain_recording_name`.
   std::string scene;
   /// Two runners (`scenes::parse_runner`): A (blue on the page), then B (orange).
   std::vector<std::string> runners = {"box2d-own", "dyop"};

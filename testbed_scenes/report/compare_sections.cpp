@@ -16,12 +16,14 @@ std::unique_ptr<CompareSection> make_thread_section();
 std::unique_ptr<CompareSection> make_recycling_section();
 std::unique_ptr<CompareSection> make_viewer_section();
 std::unique_ptr<CompareSection> make_grounds_section();
+std::unique_ptr<CompareSection> make_terrain_section();
 
 std::vector<std::unique_ptr<CompareSection>> make_compare_sections() {
   std::vector<std::unique_ptr<CompareSection>> sections;
   sections.push_back(std::make_unique<InWorldSection>());
   sections.push_back(make_slide_section());
   sections.push_back(make_grounds_section());
+  sections.push_back(make_terrain_section());
   sections.push_back(make_skip_section());
   sections.push_back(make_paper_section());
   sections.push_back(make_thread_section());

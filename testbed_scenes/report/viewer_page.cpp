@@ -289,7 +289,12 @@ Json page_data(const LockstepRecording& r) {
       points.push_back(double(quantise(p.x, 1e-5)) * 1e-5);
       points.push_back(double(quantise(p.y, 1e-5)) * 1e-5);
     }
-    fixtures.push_back({f.body, int(f.kind), points, f.radius, f.side});
+    Json fixture = {f.body, int(f.kind), points, f.radius, f.side};
+    if (f.appears != 0 || f.disappears >= 0) {  // a ground edited while recorded
+      fixture.push_back(f.appears);
+      fixture.push_back(f.disappears);
+    }
+    fixtures.push_back(fixture);
   }
   d["fixture_shapes"] = fixtures;
   d["quanta"] = {{"position", position_quantum},

@@ -29,9 +29,10 @@ import zlib
 # edge ground: every manifold type), paper (no Box2D world), rain-tall (1,500 bodies, fast
 # impacts: thousands of contacts to decode), tiles (1,494 bodies spread over a tall, wide scene:
 # the opening frame), grounds-flat (two worlds that differ in their grounds: a chain, drawn as its
-# edges, beside the builders' triangles).
+# edges, beside the builders' triangles), terrain-craters (a ground whose triangles come and go
+# with craters dug while it is recorded).
 CASES = [("slide", 40), ("mixed", 30), ("paper", 20), ("rain-tall", 60), ("tiles", 60),
-         ("grounds-flat", 60)]
+         ("grounds-flat", 60), ("terrain-craters", 40)]
 CHROMIUM = ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
             "--virtual-time-budget=10000", "--window-size=1200,1000"]
 # Of the screenshot's pixels, at least this share must differ from the page's backgrounds: the

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "experiments/ground_comparison.hpp"
+#include "experiments/ground_measures.hpp"
 
 namespace dyop::experiments {
 namespace {
@@ -41,16 +42,6 @@ std::vector<Grid> hostile_grids() {
   for (auto& cell : random) cell = rng() % 10 < 4;
   grids.push_back({"random", 40, 20, random});
   return grids;
-}
-
-double signed_area(const std::vector<b2Vec2>& loop) {
-  double a = 0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const b2Vec2& p = loop[i];
-    const b2Vec2& q = loop[(i + 1) % loop.size()];
-    a += static_cast<double>(p.x) * q.y - static_cast<double>(q.x) * p.y;
-  }
-  return a / 2;
 }
 
 TEST(TileLoops, EncloseExactlyTheSolidCellsWithTheSolidOnTheLeft) {
