@@ -35,11 +35,11 @@ void evaluate_afresh(const b2Contact& contact, b2Manifold* manifold);
 /// the bodies' transforms, and the pair's memory as the answer began with the masks its solver
 /// read in `internal_edges` (none where it answered without: apart beyond the skins).
 struct RecordedAnswer {
-  b2PolygonShape a;
-  b2PolygonShape b;
-  b2Transform xf_a;
-  b2Transform xf_b;
-  ContactMemory memory;
+  b2PolygonShape a;      ///< fixture A's triangle, as Box2D holds it
+  b2PolygonShape b;      ///< fixture B's triangle
+  b2Transform xf_a;      ///< A's body transform the answer used (world frame)
+  b2Transform xf_b;      ///< B's body transform
+  ContactMemory memory;  ///< as the answer began, `internal_edges` the masks its solver read
 };
 
 /// From now on, every answer afresh of a triangle pair made on the calling thread is appended to
