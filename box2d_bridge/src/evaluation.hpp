@@ -139,13 +139,6 @@ template <class Pair>
   return true;
 }
 
-// The solver's answer for the pair with the internal-edge rule: both fixtures' fixed edge data;
-// else a world's contact's own masks when they hold, found only once an answer without them is
-// not apart beyond the skins (it runs the solver again with them); a single pair's as its caller
-// set them in `memory`. `contact`: the world's contact, whose memory is `memory` and `masks`,
-// nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
-// `FoundMasks::motion`), nullptr for none. Nothing when B, the masks known, faces another edge
-// than A (`EdgePair::faces_away`).
 // Appends the answer of triangle pair `pair` about to be written (`memory` as the answer began,
 // but for the masks: `q`'s, those the solver read) to `answers` (`measurement::record_answers`).
 [[gnu::noinline]] inline void record_answer(std::vector<measurement::RecordedAnswer>& answers,
@@ -156,6 +149,13 @@ template <class Pair>
   answers.push_back(a);
 }
 
+// The solver's answer for the pair with the internal-edge rule: both fixtures' fixed edge data;
+// else a world's contact's own masks when they hold, found only once an answer without them is
+// not apart beyond the skins (it runs the solver again with them); a single pair's as its caller
+// set them in `memory`. `contact`: the world's contact, whose memory is `memory` and `masks`,
+// nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
+// `FoundMasks::motion`), nullptr for none. Nothing when B, the masks known, faces another edge
+// than A (`EdgePair::faces_away`).
 template <class Pair>
 [[gnu::always_inline]] inline std::optional<Result<float>> solve_with_masks(
     const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
