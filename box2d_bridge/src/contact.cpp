@@ -476,22 +476,29 @@ void measurement::evaluate_afresh(const b2Contact& contact, b2Manifold* manifold
   const b2Transform& xf_b = fb->GetBody()->GetTransform();
   const b2Shape* a = fa->GetShape();
   const b2Shape* b = fb->GetShape();
+  // Each shape cast to what its type says, and only then (a cast to another shape's class is
+  // undefined, and UBSan says so).
   const bool circle = b->m_type == b2Shape::e_circle;
-  const auto* polygon_b = static_cast<const b2PolygonShape*>(b);
-  const auto* circle_b = static_cast<const b2CircleShape*>(b);
   if (a->m_type == b2Shape::e_polygon) {
     const auto* polygon_a = static_cast<const b2PolygonShape*>(a);
-    if (circle) return b2CollidePolygonAndCircle(manifold, polygon_a, xf_a, circle_b, xf_b);
-    return b2CollidePolygons(manifold, polygon_a, xf_a, polygon_b, xf_b);
+    if (circle) {
+      return b2CollidePolygonAndCircle(manifold, polygon_a, xf_a,
+                                       static_cast<const b2CircleShape*>(b), xf_b);
+    }
+    return b2CollidePolygons(manifold, polygon_a, xf_a, static_cast<const b2PolygonShape*>(b),
+                             xf_b);
   }
   b2EdgeShape child;
-  const b2EdgeShape* edge = static_cast<const b2EdgeShape*>(a);
+  const b2EdgeShape* edge = &child;
   if (a->m_type == b2Shape::e_chain) {
     static_cast<const b2ChainShape*>(a)->GetChildEdge(&child, contact.GetChildIndexA());
-    edge = &child;
+  } else {
+    edge = static_cast<const b2EdgeShape*>(a);
   }
-  if (circle) return b2CollideEdgeAndCircle(manifold, edge, xf_a, circle_b, xf_b);
-  b2CollideEdgeAndPolygon(manifold, edge, xf_a, polygon_b, xf_b);
+  if (circle) {
+    return b2CollideEdgeAndCircle(manifold, edge, xf_a, static_cast<const b2CircleShape*>(b), xf_b);
+  }
+  b2CollideEdgeAndPolygon(manifold, edge, xf_a, static_cast<const b2PolygonShape*>(b), xf_b);
 }
 
 std::optional<InternalEdges> contact_internal_edges(const b2Contact& contact) {
