@@ -15,6 +15,7 @@
 #include <box2d/b2_collision.h>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -207,21 +208,29 @@ template <class Pair>
 }
 
 // Remembers the pose of a manifold just answered: kept while the pair moves less than the
-// setting's distance (a share of it with a static body: `static_pair_share`); an empty one also no
-// farther than `gap` (how far the pair may move before a manifold could have points: a lower
-// bound, so that no new contact is missed); never below 0 (that marks a skip:
-// `ManifoldRecycling::lose_pose`).
+// setting's distance (a share of it with a static body: `static_pair_share`); one with points
+// also no farther than `face_room` (how far the pair may move before another face could beat its
+// reference face by more than the hysteresis), an empty one no farther than `gap`
+// (how far the pair may move before a manifold could have points: a lower bound, so that no new
+// contact is missed); never below 0 (that marks a skip: `ManifoldRecycling::lose_pose`).
 inline void remember(const Setting& setting, const PairPose& pose, const b2Manifold& manifold,
-                     float gap, const Contact* contact, ManifoldRecycling& recycling) {
+                     float gap, const Contact* contact, ManifoldRecycling& recycling,
+                     float face_room = std::numeric_limits<float>::infinity()) {
   if (!setting.recycles()) return;
   float slack = 1;
   if (!setting.never_recompute) {
     const bool static_pair = contact && contact->with_static_body();
     const float distance = setting.config.recycle_distance * (static_pair ? static_pair_share : 1);
-    slack = manifold.pointCount > 0 ? distance : std::max(0.0f, std::min(distance, gap));
+    slack = std::max(0.0f, std::min(distance, manifold.pointCount > 0 ? face_room : gap));
   }
   recycling.remember(pose.b_in_a.q, pose.centroid_b_in_a, slack, setting.epoch);
 }
+
+// How far a pair may move before another face could beat the reference face of its manifold by
+// more than `hysteresis` (`Manifold::lead`: every overlap moves at most as far as the pair, the
+// difference of two at most twice that): a kept manifold's depth then stays within the hysteresis
+// of the least overlap, the bound a fresh answer keeps.
+inline float face_room(float hysteresis, float lead) { return (hysteresis + lead) / 2; }
 
 // Answer, once nothing was kept or skipped: the solver's answer (`solve_with_masks`), its pose
 // remembered for keeping (`recycling`: the world's contact's, nullptr for a single pair); Box2D's
@@ -255,7 +264,8 @@ template <class Pair>
         pair.write(manifold, r->manifold, pose);
         if (manifold->pointCount > 0) count.manifolds.add();
         if (recycling) {
-          remember(setting, pose, *manifold, pair.gap(*r, pose, memory), contact, *recycling);
+          remember(setting, pose, *manifold, pair.gap(*r, pose, memory), contact, *recycling,
+                   face_room(Pair::hysteresis(pose), r->manifold.lead));
         }
         return;
       }

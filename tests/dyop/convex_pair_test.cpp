@@ -91,6 +91,9 @@ TYPED_TEST(ConvexPair, BoxOnBoxGivesItsDepthNormalAndTwoPoints) {
   EXPECT_EQ(r.manifold.reference_edge, 2);  // the ground's top, from (2, 0.5) to (−2, 0.5)
   for (int i = 0; i < 2; ++i) EXPECT_NEAR(r.manifold.points[i].separation, -0.1, tol<T>());
   EXPECT_NE(r.manifold.points[0].key, r.manifold.points[1].key);
+  // The next least overlap: the ground's bottom and the crate's top, 1.9 (the crate's bottom lies
+  // flush with the reference face, 0.1 too, and does not count).
+  EXPECT_NEAR(r.manifold.lead, 1.9 - 0.1, tol<T>());
 }
 
 TYPED_TEST(ConvexPair, ApartPairGivesTheDistanceAndTheDirectionThatSeparates) {

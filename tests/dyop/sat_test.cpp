@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "dyop/sat.hpp"
 #include "support/make_triangle.hpp"
@@ -35,6 +36,20 @@ TYPED_TEST(Sat, VertexIntoFaceGivesItsDepthNormalWitnessesAndFeatures) {
   EXPECT_NEAR((r.witness_b - Vec2<T>(2, 0.5)).norm(), 0, tol<T>());
   EXPECT_NEAR((r.witness_a - Vec2<T>(2, 0)).norm(), 0, tol<T>());
   EXPECT_TRUE(has_features(r, {Feature::Type::Edge, 0}, {Feature::Type::Vertex, 0}));
+}
+
+// The same pair's manifold: the next least overlap is along B's slanted faces, normals
+// (±2.5, 1)/√7.25: 5.5/√7.25 against the reference face's 0.5.
+TYPED_TEST(Sat, ManifoldLeadIsTheNextLeastOverlapBeyondTheReferenceFace) {
+  using T = TypeParam;
+  const auto a = tri<T>(0, 0, 4, 0, 2, 4);
+  const auto b = tri<T>(2, 0.5, 1, -2, 3, -2);
+  const Result<T> r = sat(a, b, {Level::Manifold});
+  ASSERT_EQ(r.manifold.point_count, 1);
+  EXPECT_NEAR(r.manifold.lead, 5.5 / std::sqrt(7.25) - 0.5, tol<T>());
+  const auto apart = tri<T>(2, -1.5, 1, -4, 3, -4);
+  EXPECT_EQ(sat(a, apart, {Level::Manifold}).manifold.lead, std::numeric_limits<T>::infinity())
+      << "no points, no lead";
 }
 
 TYPED_TEST(Sat, ApartPairGivesTheEuclideanDistanceAndClosestPoints) {
@@ -99,6 +114,9 @@ TYPED_TEST(Sat, FlatFaceOnFaceGivesTwoManifoldPointsWithTheirSeparations) {
     EXPECT_NEAR(m.points[i].point.y(), -0.1, tol<T>());
   }
   EXPECT_NE(m.points[0].key, m.points[1].key);
+  // B's bottom lies flush with the reference face (0.1 too) and does not count; next are A's
+  // slanted faces, 7/√2.
+  EXPECT_NEAR(m.lead, 7 / std::sqrt(2.0) - 0.1, tol<T>());
 }
 
 TYPED_TEST(Sat, ManifoldClipsTheIncidentEdgeToTheReferenceFace) {

@@ -27,9 +27,10 @@ namespace dyop::detail {
 template <class T>
 struct AllowedAxes {
   std::array<T, 6> overlap;
-  int least = 0;    // least overlap of all six (A's on ties): decides the status
-  int best_a = -1;  // least usable axis of A's; -1: none
-  int best_b = -1;  // least usable axis of B's; -1: none
+  int least = 0;        // least overlap of all six (A's on ties): decides the status
+  int best_a = -1;      // least usable axis of A's; -1: none
+  int best_b = -1;      // least usable axis of B's; -1: none
+  unsigned usable = 0;  // bit k: axis k is usable
 
   bool any() const { return best_a >= 0 || best_b >= 0; }
   // The least usable axis (A's on ties); `any()` must hold.
@@ -228,6 +229,7 @@ AllowedAxes<T> allowed_axes(const PairFrame<T>& f, const Query<T>& q,
   const unsigned allowed = a.allowed | b.allowed << 3;
   const unsigned usable =
       touched_a != 0 && touched_b != 0 ? allowed & (touched_a | touched_b << 3) : allowed;
+  out.usable = usable;
   out.best_a = least_of(overlap, usable, 0);
   out.best_b = least_of(overlap, usable, 3);
   return out;

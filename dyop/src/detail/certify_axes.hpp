@@ -78,7 +78,11 @@ template <class T, class Find>
     set_reference_face(f, allowed.least, r.manifold);
     return r;
   }
-  fill_manifold(f, q, allowed.reference(q.face_hysteresis), r);
+  const AxisOverlap<T> reference = allowed.reference(q.face_hysteresis);
+  fill_manifold(f, q, reference, r);
+  if (r.manifold.point_count > 0) {
+    r.manifold.lead = lead_over(f, overlap, allowed.usable, reference.axis);
+  }
   return r;
 }
 
@@ -112,6 +116,7 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
     answer_on_axis(f, fields_level(q), overlap, least, r);
   }
   fill_manifold(f, q, reference, r);
+  if (r.manifold.point_count > 0) r.manifold.lead = lead_over(f, overlap, 63u, reference.axis);
   return r;
 }
 

@@ -3,7 +3,9 @@
 // of separation), computing only what the query's level asks for. One set of helpers serves
 // every method.
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "detail/axis_overlap.hpp"
 #include "detail/clip_manifold.hpp"
@@ -141,6 +143,52 @@ inline AxisOverlap<T> reference_face(const std::array<T, 6>& overlap, T hysteres
   const int b = argmin3(overlap, 3);
   return pick_reference(AxisOverlap<T>{a, overlap[a], 0}, AxisOverlap<T>{b, overlap[b], 0},
                         hysteresis);
+}
+
+// An axis of the other shape whose direction (A to B) meets the reference face's at a cosine
+// above this lies flush with it for `Manifold::lead` (about 1.1°). Why: two faces lying flush
+// give the same depth; as the pair moves their overlaps part by at most 0.02 of its shift, and as
+// it turns by what the turn moves any face.
+template <class T>
+constexpr T flush_cosine() {
+  return T(1) - T(2e-4);
+}
+
+// `Manifold::lead` of a manifold on axis `reference` of frame `f` (axes 0..`count_a` − 1 are A's,
+// then B's up to `count`): the least overlap of the other axes set in `axes`, but the other
+// shape's lying flush with the face (`flush_cosine`), minus the face's; +infinity for none.
+template <class F, class T>
+T lead_over(const F& f, const T* overlap, int count_a, int count, unsigned axes, int reference) {
+  const Vec2<T> u = f.axis(reference);
+  const bool on_a = reference < count_a;
+  unsigned counted = axes & ~(1u << reference);
+  for (int k = 0; k < count; ++k) {
+    const bool flush = ((k < count_a) != on_a) & (u.dot(f.axis(k)) >= flush_cosine<T>());
+    counted &= ~(static_cast<unsigned>(flush) << k);
+  }
+  T least = std::numeric_limits<T>::infinity();
+  for (int k = 0; k < count; ++k) {
+    least = std::min(least, ((counted >> k) & 1u) != 0 ? overlap[k] : least);
+  }
+  return least - overlap[reference];
+}
+
+// The same for a pair of triangles, unrolled: only the other triangle's three axes may lie flush.
+template <class T>
+T lead_over(const PairFrame<T>& f, const std::array<T, 6>& overlap, unsigned axes, int reference) {
+  const bool on_a = reference < 3;
+  const Vec2<T> u = f.axis(reference) * (on_a ? T(-1) : T(1));  // against the other's normals
+  const Triangle<T>& other = on_a ? f.tb : f.ta;
+  unsigned flush = 0;
+  for (int j = 0; j < 3; ++j) {
+    flush |= static_cast<unsigned>(u.dot(other.normal(j)) >= flush_cosine<T>()) << j;
+  }
+  const unsigned counted = axes & ~(1u << reference) & ~(flush << (on_a ? 3 : 0));
+  T least = std::numeric_limits<T>::infinity();
+  for (int k = 0; k < 6; ++k) {
+    least = std::min(least, ((counted >> k) & 1u) != 0 ? overlap[k] : least);
+  }
+  return least - overlap[reference];
 }
 
 // The manifold on `reference`, when its separation is within the margin.

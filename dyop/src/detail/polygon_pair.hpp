@@ -354,8 +354,9 @@ EdgeBits edge_bits(const F& f, bool own_a, T reach) {
 // `reach` (its least, and Box2D's reference among them); when one shape touches no edge of the
 // other, the other holds it whole and the masks alone decide (see `Query::internal_edges`).
 struct UsableAxes {
-  int best_a = -1;  // least usable axis of A's; −1: none
-  int best_b = -1;  // least usable axis of B's; −1: none
+  int best_a = -1;      // least usable axis of A's; −1: none
+  int best_b = -1;      // least usable axis of B's; −1: none
+  unsigned usable = 0;  // bit k: axis k is usable
   bool any() const { return best_a >= 0 || best_b >= 0; }
 };
 
@@ -372,7 +373,7 @@ UsableAxes usable_axes(const F& f, const ConvexQuery<T>& q, const Overlaps<T>& o
   const unsigned touched_b = ~(b.wholly_inside | a.cut_other) & ((1u << f.counts[1]) - 1);
   const unsigned usable =
       touched_a != 0 && touched_b != 0 ? allowed & (touched_a | touched_b << na) : allowed;
-  return {o.least_in(0, na, usable), o.least_in(na, f.axes(), usable)};
+  return {o.least_in(0, na, usable), o.least_in(na, f.axes(), usable), usable};
 }
 
 // Box2D's reference rule between A's best axis `a` and B's `b` (−1: none on that side).
@@ -395,6 +396,7 @@ template <class T, class PA, class PB>
   int reference = reference_of(o, o.best_a, o.best_b, q.face_hysteresis);
   int answer_axis = o.least;
   bool no_usable_axis = false;
+  unsigned answerable = (1u << f.axes()) - 1;  // the axes the answer could take: all, or the usable
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
   const bool ruled =
       (q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
@@ -404,6 +406,7 @@ template <class T, class PA, class PB>
   if (ruled) {
     const UsableAxes u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
+    answerable = u.usable;
     if (u.any()) {
       answer_axis = u.best_a < 0                                ? u.best_b
                     : u.best_b < 0                              ? u.best_a
@@ -434,6 +437,9 @@ template <class T, class PA, class PB>
     set_reference_face(f, reference, r.manifold);
   } else {
     clip_manifold(f, reference, q.margin, r.manifold);
+    if (r.manifold.point_count > 0) {
+      r.manifold.lead = lead_over(f, o.overlap, f.counts[0], f.axes(), answerable, reference);
+    }
   }
   return r;
 }
