@@ -17,6 +17,7 @@ InWorldSide side_of(const std::vector<scenes::SceneMetrics>& runs) {
   InWorldSide side{scenes::median(collide), scenes::median(step), scenes::median(toi),
                    scenes::median(step_median), runs.front().contact_updates};
   const scenes::SceneMetrics& first = runs.front();
+  side.toi_swept = first.toi_swept;
   side.contacts_made = first.contacts_made.value_or(0);
   side.kept = first.recycled.value_or(0);
   if (first.skips) {

@@ -30,6 +30,7 @@ struct InWorldSide {
   double solve_toi_ms = 0;            ///< `b2World::SolveTOI` over steps 2..N (ms)
   double step_ms_median = 0;          ///< scenes::median wall time of one step (ms)
   std::uint64_t contact_updates = 0;  ///< contact updates in steps 2..N (first repetition)
+  std::uint64_t toi_swept = 0;  ///< contacts `SolveTOI` swept in steps 2..N (first repetition)
   /// The plug-in's side, first repetition, the whole run: contacts made, and its evaluations kept
   /// (`recycled`), skipped and answered afresh (`box2d::Stats`); 0 for Box2D's own.
   std::uint64_t contacts_made = 0;

@@ -30,6 +30,8 @@ void write_summary(const SceneMetrics& m, std::ostream& out) {
       << "  narrow phase: " << m.triangle_pairs << " triangle pairs, " << m.narrowphase_ns_per_pair
       << " ns per pair (" << m.narrowphase_ms_total << " ms); step median " << m.step_ms_median
       << " ms\n"
+      << "  time of impact: " << m.toi_swept << " contacts swept (" << m.solve_toi_ms_total
+      << " ms)\n"
       << "  penetration (exact): max " << m.max_penetration << " m, mean " << m.mean_penetration
       << " m; depth error vs exact: max " << m.pd_error_max << " m, mean " << m.pd_error_mean
       << " m, misclassified " << m.misclassified << ", invalid " << m.invalid << '\n'

@@ -92,6 +92,7 @@ Json to_json(const SceneMetrics& m) {
   j["triangles"] = m.triangles;
   j["triangle_pairs"] = m.triangle_pairs;
   j["contact_updates"] = m.contact_updates;
+  j["toi_swept"] = m.toi_swept;
   j["plugin_evaluations"] = optional(m.plugin_evaluations);
   j["fallbacks"] = optional(m.fallbacks);
   j["skip_config"] = skip_config(m.skip_config);

@@ -85,6 +85,17 @@ CollideAction collide_action(const b2World& world, const b2Contact& contact) {
   return CollideAction::Update;
 }
 
+bool toi_swept(const b2Contact& contact) {
+  const b2Fixture* fa = contact.GetFixtureA();
+  const b2Fixture* fb = contact.GetFixtureB();
+  if (!contact.IsEnabled() || fa->IsSensor() || fb->IsSensor()) return false;
+  const b2Body* a = fa->GetBody();
+  const b2Body* b = fb->GetBody();
+  if (!active(a) && !active(b)) return false;
+  return a->IsBullet() || a->GetType() != b2_dynamicBody || b->IsBullet() ||
+         b->GetType() != b2_dynamicBody;
+}
+
 ContactProbe::Updates ContactProbe::before_step(const b2World& world, ErrorTally& errors) {
   ++pass_;
   Updates u;

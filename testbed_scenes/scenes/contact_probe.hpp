@@ -50,6 +50,12 @@ enum class CollideAction : std::uint8_t {
 /// steps need no notice.
 CollideAction collide_action(const b2World& world, const b2Contact& contact);
 
+/// Box2D 2.4.1's rule in `b2World::SolveTOI`: a contact whose time of impact it computes
+/// (`b2TimeOfImpact`), touching or not, is enabled, has no sensor, and has a body awake and not
+/// static whose partner is static or kinematic, or a bullet. Read after a step, it names the
+/// contacts that step's `SolveTOI` swept (but for those its sub-steps made or woke).
+bool toi_swept(const b2Contact& contact);
+
 /// The exact separation of triangles `a` and `b` (`sat` in double; metres) as an `ErrorTally`
 /// reads it: minus the depth of a pair in contact, the distance of a pair apart by up to twice
 /// `band` (the tally's touching band, metres), and for a pair apart farther a gap that proves it

@@ -80,6 +80,9 @@ struct SceneMetrics {
   /// Every contact update in the measured steps, whatever the shapes (= `triangle_pairs` but in
   /// `mixed`, where circles, boxes and edges have contacts of their own).
   std::uint64_t contact_updates = 0;
+  /// Box2D scenes: contacts `b2World::SolveTOI` sweeps for a time of impact in the measured steps,
+  /// touching or not (an awake body against a static or kinematic one, or a bullet: `toi_swept`).
+  std::uint64_t toi_swept = 0;
   /// Box2D scenes: pairs the plug-in's contacts evaluated in all (`stats().evaluations()`: every
   /// family), step 1 and the re-evaluations of Box2D's time-of-impact sub-steps included. None
   /// for `paper`.

@@ -87,6 +87,11 @@ void WorldScene::step() {
     updates_.triangles += u.triangles;
   }
 
+  if (measured) {
+    for (const b2Contact* c = world_->get().GetContactList(); c != nullptr; c = c->GetNext()) {
+      toi_swept_ += static_cast<std::uint64_t>(toi_swept(*c));
+    }
+  }
   ContactProbe::measure_penetration(world_->get(), penetration_);
   for (const b2Body* b : world_->bodies()) nan_ = nan_ || !finite_state(b);
   if (steps_ == settle_steps) {
@@ -129,6 +134,7 @@ SceneMetrics WorldScene::metrics() const {
   m.hash = state_hash(*world_);
   m.triangle_pairs = updates_.triangles;
   m.contact_updates = updates_.contacts;
+  m.toi_swept = toi_swept_;
   if (runner_) {  // the plug-in's counters mean nothing when Box2D's own contact answers
     const box2d::Stats s = box2d::stats();
     m.plugin_evaluations = s.evaluations();

@@ -97,6 +97,7 @@ class WorldScene : public Scene {
   double collide_ms_ = 0;
   double solve_toi_ms_ = 0;  // steps 2..N
   ContactProbe::Updates updates_;
+  std::uint64_t toi_swept_ = 0;  // SceneMetrics::toi_swept
   ErrorTally errors_;
   PenetrationTally penetration_;
   double top_displacement_ = 0;

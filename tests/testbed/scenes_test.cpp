@@ -236,6 +236,53 @@ TEST(ContactProbe, CollideActionJudgesEachChildOfAChain) {
   EXPECT_EQ(std::count(after.begin(), after.end(), 26), 1);
 }
 
+// Box2D's rule as `toi_swept` reads it: a box on the ground is swept for a time of impact; a box
+// stacked on it is not, until it is a bullet; a sensor never is; nor is anything asleep.
+TEST(ContactProbe, ToiSweptIsAnAwakeBodyAgainstStaticGroundOrABullet) {
+  b2World world(b2Vec2(0.0f, -10.0f));
+  b2BodyDef ground_def;
+  b2Body* ground = world.CreateBody(&ground_def);
+  b2PolygonShape slab;
+  slab.SetAsBox(5.0f, 0.5f);
+  ground->CreateFixture(&slab, 0.0f);
+  b2PolygonShape square;
+  square.SetAsBox(0.5f, 0.5f);
+  auto box_at = [&](float y) {
+    b2BodyDef def;
+    def.type = b2_dynamicBody;
+    def.position.Set(0.0f, y);
+    b2Body* body = world.CreateBody(&def);
+    body->CreateFixture(&square, 1.0f);
+    return body;
+  };
+  b2Body* low = box_at(1.0f);
+  b2Body* high = box_at(2.0f);
+  b2FixtureDef sensor_def;
+  sensor_def.shape = &square;
+  sensor_def.isSensor = true;
+  ground->CreateFixture(&sensor_def);  // overlaps the low box
+  world.Step(1.0f / 60.0f, 8, 3);      // the contacts are made
+  auto swept = [&](const b2Body* x, const b2Body* y, bool sensor) {
+    for (const b2Contact* c = world.GetContactList(); c != nullptr; c = c->GetNext()) {
+      const b2Fixture* fa = c->GetFixtureA();
+      const b2Fixture* fb = c->GetFixtureB();
+      const bool bodies =
+          (fa->GetBody() == x && fb->GetBody() == y) || (fa->GetBody() == y && fb->GetBody() == x);
+      if (bodies && (fa->IsSensor() || fb->IsSensor()) == sensor) return toi_swept(*c);
+    }
+    ADD_FAILURE() << "no such contact";
+    return false;
+  };
+  EXPECT_TRUE(swept(ground, low, false));
+  EXPECT_FALSE(swept(low, high, false)) << "two dynamic bodies, neither a bullet";
+  EXPECT_FALSE(swept(ground, low, true)) << "a sensor";
+  high->SetBullet(true);
+  EXPECT_TRUE(swept(low, high, false));
+  low->SetAwake(false);
+  high->SetAwake(false);
+  EXPECT_FALSE(swept(ground, low, false)) << "asleep";
+}
+
 // The probe's exact reference skips the distance search of pairs apart well beyond the tally's
 // band: what it hands the tally is the full answer's separation wherever the tally reads its value
 // (in contact, or apart within the band), and beyond the band a value above the band and at most
