@@ -156,24 +156,30 @@ constexpr T flush_cosine() {
 
 // `Manifold::lead` of a manifold on axis `reference` of frame `f` (axes 0..`count_a` − 1 are A's,
 // then B's up to `count`): the least overlap of the other axes set in `axes`, but the other
-// shape's lying flush with the face (`flush_cosine`), minus the face's; +infinity for none.
+// shape's lying flush with the face (`flush_cosine`), minus the face's; +infinity for none. The
+// least is taken first and its direction looked at after: most pairs have one flush axis at most.
 template <class F, class T>
 T lead_over(const F& f, const T* overlap, int count_a, int count, unsigned axes, int reference) {
   const Vec2<T> u = f.axis(reference);
   const bool on_a = reference < count_a;
   unsigned counted = axes & ~(1u << reference);
-  for (int k = 0; k < count; ++k) {
-    const bool flush = ((k < count_a) != on_a) & (u.dot(f.axis(k)) >= flush_cosine<T>());
-    counted &= ~(static_cast<unsigned>(flush) << k);
+  while (counted != 0) {
+    int least = -1;
+    for (int k = 0; k < count; ++k) {
+      const bool take = ((counted >> k) & 1u) != 0 && (least < 0 || overlap[k] < overlap[least]);
+      least = select_index(take, k, least);
+    }
+    const bool of_other = (least < count_a) != on_a;
+    if (!of_other || u.dot(f.axis(least)) < flush_cosine<T>()) {
+      return overlap[least] - overlap[reference];
+    }
+    counted &= ~(1u << least);
   }
-  T least = std::numeric_limits<T>::infinity();
-  for (int k = 0; k < count; ++k) {
-    least = std::min(least, ((counted >> k) & 1u) != 0 ? overlap[k] : least);
-  }
-  return least - overlap[reference];
+  return std::numeric_limits<T>::infinity();
 }
 
-// The same for a pair of triangles, unrolled: only the other triangle's three axes may lie flush.
+// The same for a pair of triangles, without branches on the data: the other triangle's three
+// axes tested for flush at once, then the least of the rest.
 template <class T>
 T lead_over(const PairFrame<T>& f, const std::array<T, 6>& overlap, unsigned axes, int reference) {
   const bool on_a = reference < 3;
