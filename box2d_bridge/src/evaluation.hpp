@@ -167,6 +167,8 @@ template <class Pair>
   q.face_hysteresis = Pair::hysteresis(pose);
   q.apart = Apart::Gap;  // beyond the skins a manifold is empty: no distance is needed
   q.witnesses = false;   // Box2D's solver reads the manifold alone
+  // A lead of twice the distance or more never limits the keeping (`face_room`).
+  q.lead_reach = setting.recycles() ? 2 * setting.config.recycle_distance : 0;
   bool put_off = false;
   if (Pair::rule(setting) && contact) {
     // Fixed masks read since the last record was written, free of the poses, hold as they are;

@@ -1,7 +1,8 @@
 // `Manifold::lead` on seeded pairs of every penetrating kind: it is the next least overlap of an
 // axis, but the other triangle's lying flush with the reference face, minus the face's, measured
-// here apart from the solvers; and its promise holds: B moved by less than (hysteresis + lead) / 2
-// in the direction worst for each such axis, no axis beats the face by more than the hysteresis.
+// here apart from the solvers, and within `Query::lead_reach` only when asked; and its promise
+// holds: B moved by less than (hysteresis + lead) / 2 in the direction worst for each such axis,
+// no axis beats the face by more than the hysteresis.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -21,6 +22,7 @@ constexpr double kHysteresis = 1e-3;  // of pairs about 1 unit across
 constexpr double kRounding = 1e-9;    // what double arithmetic leaves on overlaps of such pairs
 constexpr double kFlushCosine = 1 - 2e-4;  // the solvers' `flush_cosine`
 constexpr double kFlushMargin = 1e-9;      // directions this close to that cosine are left out
+constexpr double kReach = 0.05;            // a `Query::lead_reach` below many pairs' leads
 
 // The six axes of pair `p`, each pointing from A to B: A's outward edge normals, then B's negated.
 std::array<Vec2<double>, 6> axes_of(const RawPair& p) {
@@ -75,6 +77,14 @@ void check_leads(InputClass c, const Solve& solve) {
     ++checked;
     EXPECT_NEAR(r.manifold.lead, next - face, kRounding) << name(c);
     EXPECT_GE(r.manifold.lead, -kHysteresis - kRounding) << name(c);
+    // Looked for only within a reach: the same lead below it, +infinity beyond.
+    Query<double> within = q;
+    within.lead_reach = kReach;
+    const double reached = solve(t.a.triangle, t.b.triangle, within).manifold.lead;
+    if (std::abs(r.manifold.lead - kReach) > kRounding) {
+      EXPECT_EQ(reached, r.manifold.lead < kReach ? r.manifold.lead
+                                                  : std::numeric_limits<double>::infinity());
+    }
     const double room = 0.999 * (kHysteresis + r.manifold.lead) / 2;
     for (int k = 0; k < 6; ++k) {
       if (!counted[k]) continue;

@@ -17,6 +17,7 @@
 /// `dyop/polygon.hpp`.
 
 #include <cstdint>
+#include <limits>
 
 #include "dyop/polygon.hpp"
 #include "dyop/result.hpp"
@@ -59,6 +60,9 @@ struct ConvexQuery {
   ShapeMasks masks_b{};
   /// Level::Manifold only: false leaves the Contact level's fields at their defaults.
   bool witnesses = true;
+  /// Manifold only: `Manifold::lead` is looked for up to this (length units); a lead at least
+  /// this comes back +infinity. Default +infinity: always the lead.
+  T lead_reach = std::numeric_limits<T>::infinity();
 };
 
 /// Exact answer for two convex polygons at `query.level` (any vertex counts, triangles included).

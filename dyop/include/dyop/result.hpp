@@ -137,6 +137,9 @@ struct Query {
   /// level's fields and the manifold are the same either way, bit for bit. Honoured by the exact
   /// methods (`dyop`, `sat`); the others fill the fields anyway.
   bool witnesses = true;
+  /// Manifold only: `Manifold::lead` is looked for up to this (length units); a lead at least
+  /// this comes back +infinity. Default +infinity: always the lead.
+  T lead_reach = std::numeric_limits<T>::infinity();
 };
 
 /// A vertex or an edge of one triangle, by caller's index.
@@ -176,7 +179,8 @@ struct Manifold {
   /// With points, from the exact methods (`dyop`, `sat`, polygons): the least overlap of the
   /// other axes the method could answer on, but the other shape's faces lying flush with the
   /// reference face (within about 1.1°), minus the face's (length units; below 0, by at most
-  /// `face_hysteresis`, when the hysteresis kept the face over a lesser one); +infinity otherwise.
+  /// `face_hysteresis`, when the hysteresis kept the face over a lesser one); +infinity otherwise,
+  /// and when at least `Query::lead_reach`.
   /// Every overlap moves at most as far as the pair: while it moves less than `(face_hysteresis +
   /// lead) / 2`, no such axis beats the face by more than `face_hysteresis`.
   T lead = std::numeric_limits<T>::infinity();

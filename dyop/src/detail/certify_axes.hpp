@@ -81,7 +81,7 @@ template <class T, class Find>
   const AxisOverlap<T> reference = allowed.reference(q.face_hysteresis);
   fill_manifold(f, q, reference, r);
   if (r.manifold.point_count > 0) {
-    r.manifold.lead = lead_over(f, overlap, allowed.usable, reference.axis);
+    r.manifold.lead = lead_over(f, overlap, 3, 6, allowed.usable, reference.axis, q.lead_reach);
   }
   return r;
 }
@@ -116,7 +116,8 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
     answer_on_axis(f, fields_level(q), overlap, least, r);
   }
   fill_manifold(f, q, reference, r);
-  if (r.manifold.point_count > 0) r.manifold.lead = lead_over(f, overlap, 63u, reference.axis);
+  if (r.manifold.point_count > 0)
+    r.manifold.lead = lead_over(f, overlap, 3, 6, 63u, reference.axis, q.lead_reach);
   return r;
 }
 

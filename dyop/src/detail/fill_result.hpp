@@ -6,6 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "detail/axis_overlap.hpp"
 #include "detail/clip_manifold.hpp"
@@ -154,47 +158,45 @@ constexpr T flush_cosine() {
   return T(1) - T(2e-4);
 }
 
-// `Manifold::lead` of a manifold on axis `reference` of frame `f` (axes 0..`count_a` − 1 are A's,
-// then B's up to `count`): the least overlap of the other axes set in `axes`, but the other
-// shape's lying flush with the face (`flush_cosine`), minus the face's; +infinity for none. The
-// least is taken first and its direction looked at after: most pairs have one flush axis at most.
-template <class F, class T>
-T lead_over(const F& f, const T* overlap, int count_a, int count, unsigned axes, int reference) {
-  const Vec2<T> u = f.axis(reference);
-  const bool on_a = reference < count_a;
-  unsigned counted = axes & ~(1u << reference);
-  while (counted != 0) {
-    int least = -1;
-    for (int k = 0; k < count; ++k) {
-      const bool take = ((counted >> k) & 1u) != 0 && (least < 0 || overlap[k] < overlap[least]);
-      least = select_index(take, k, least);
+// Bit k set: `overlap[k] < limit`. Four lanes at a time for float arrays of a multiple of four.
+template <std::size_t Max, class T>
+unsigned below(const std::array<T, Max>& overlap, T limit) {
+#if defined(__SSE2__)
+  if constexpr (std::is_same_v<T, float> && Max % 4 == 0) {
+    const __m128 l = _mm_set1_ps(limit);
+    unsigned bits = 0;
+    for (std::size_t k = 0; k < Max; k += 4) {
+      const __m128 lt = _mm_cmplt_ps(_mm_loadu_ps(overlap.data() + k), l);
+      bits |= static_cast<unsigned>(_mm_movemask_ps(lt)) << k;
     }
-    const bool of_other = (least < count_a) != on_a;
-    if (!of_other || u.dot(f.axis(least)) < flush_cosine<T>()) {
-      return overlap[least] - overlap[reference];
-    }
-    counted &= ~(1u << least);
+    return bits;
   }
-  return std::numeric_limits<T>::infinity();
+#endif
+  unsigned bits = 0;
+  for (std::size_t k = 0; k < Max; ++k) bits |= static_cast<unsigned>(overlap[k] < limit) << k;
+  return bits;
 }
 
-// The same for a pair of triangles, without branches on the data: the other triangle's three
-// axes tested for flush at once, then the least of the rest.
-template <class T>
-T lead_over(const PairFrame<T>& f, const std::array<T, 6>& overlap, unsigned axes, int reference) {
-  const bool on_a = reference < 3;
-  const Vec2<T> u = f.axis(reference) * (on_a ? T(-1) : T(1));  // against the other's normals
-  const Triangle<T>& other = on_a ? f.tb : f.ta;
-  unsigned flush = 0;
-  for (int j = 0; j < 3; ++j) {
-    flush |= static_cast<unsigned>(u.dot(other.normal(j)) >= flush_cosine<T>()) << j;
+// `Manifold::lead` of a manifold on axis `reference` of frame `f` (axes 0..`count_a` − 1 are A's,
+// then B's up to `count` ≤ `Max`): the least overlap of the other axes set in `axes`, but the
+// other shape's lying flush with the face (`flush_cosine`), minus the face's; +infinity for none,
+// and for a lead of `reach` or more (`Query::lead_reach`): only axes within it are looked at.
+template <std::size_t Max, class F, class T>
+T lead_over(const F& f, const std::array<T, Max>& overlap, int count_a, int count, unsigned axes,
+            int reference, T reach) {
+  const T face = overlap[reference];
+  const unsigned near =
+      below(overlap, face + reach) & axes & ~(1u << reference) & ((1u << count) - 1);
+  T lead = std::numeric_limits<T>::infinity();
+  if (near == 0) return lead;
+  const Vec2<T> u = f.axis(reference);
+  const bool on_a = reference < count_a;
+  for (int k = 0; k < count; ++k) {
+    if (((near >> k) & 1u) == 0) continue;
+    const bool flush = ((k < count_a) != on_a) && u.dot(f.axis(k)) >= flush_cosine<T>();
+    if (!flush) lead = std::min(lead, overlap[k] - face);
   }
-  const unsigned counted = axes & ~(1u << reference) & ~(flush << (on_a ? 3 : 0));
-  T least = std::numeric_limits<T>::infinity();
-  for (int k = 0; k < 6; ++k) {
-    least = std::min(least, ((counted >> k) & 1u) != 0 ? overlap[k] : least);
-  }
-  return least - overlap[reference];
+  return lead;
 }
 
 // The manifold on `reference`, when its separation is within the margin.

@@ -11,6 +11,7 @@
 // when the type also has `size_bound` (see `size_bound`), so it may measure.
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 
@@ -114,10 +115,10 @@ AxisOverlap<typename F::Scalar> overlap_on_axis(const F& f, int k) {
 // pairs need them for one axis at most (`overlap_on_axis`).
 template <class T>
 struct Overlaps {
-  T overlap[2 * max_polygon_vertices] = {};  // by axis
-  int best_a = 0;                            // least of A's axes (first on ties)
-  int best_b = 0;                            // least of B's axes (first on ties)
-  int least = 0;                             // least of all (A's on ties): decides the status
+  std::array<T, 2 * max_polygon_vertices> overlap{};  // by axis
+  int best_a = 0;                                     // least of A's axes (first on ties)
+  int best_b = 0;                                     // least of B's axes (first on ties)
+  int least = 0;  // least of all (A's on ties): decides the status
 
   template <class F>
   explicit Overlaps(const F& f) {
@@ -396,7 +397,7 @@ template <class T, class PA, class PB>
   int reference = reference_of(o, o.best_a, o.best_b, q.face_hysteresis);
   int answer_axis = o.least;
   bool no_usable_axis = false;
-  unsigned answerable = (1u << f.axes()) - 1;  // the axes the answer could take: all, or the usable
+  unsigned usable = 0;  // the axes the rule lets the answer take, when it rules
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
   const bool ruled =
       (q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
@@ -406,7 +407,7 @@ template <class T, class PA, class PB>
   if (ruled) {
     const UsableAxes u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
-    answerable = u.usable;
+    usable = u.usable;
     if (u.any()) {
       answer_axis = u.best_a < 0                                ? u.best_b
                     : u.best_b < 0                              ? u.best_a
@@ -438,7 +439,8 @@ template <class T, class PA, class PB>
   } else {
     clip_manifold(f, reference, q.margin, r.manifold);
     if (r.manifold.point_count > 0) {
-      r.manifold.lead = lead_over(f, o.overlap, f.counts[0], f.axes(), answerable, reference);
+      r.manifold.lead = lead_over(f, o.overlap, f.counts[0], f.axes(),
+                                  ruled ? usable : (1u << f.axes()) - 1, reference, q.lead_reach);
     }
   }
   return r;
