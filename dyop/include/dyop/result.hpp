@@ -176,13 +176,10 @@ struct Manifold {
   std::uint8_t incident_edge = 0;    ///< caller's edge index of the incident edge (other triangle)
   Vec2<T> normal = Vec2<T>::Zero();  ///< unit, A to B (reference face normal, negated for B)
   std::array<ManifoldPoint<T>, 2> points{};  ///< first `point_count` are valid
-  /// With points, from the exact methods (`dyop`, `sat`, polygons): the least overlap of the
-  /// other axes the method could answer on, but the other shape's faces lying flush with the
-  /// reference face (within about 1.1°), minus the face's (length units; below 0, by at most
-  /// `face_hysteresis`, when the hysteresis kept the face over a lesser one); +infinity otherwise,
-  /// and when at least `Query::lead_reach`.
-  /// Every overlap moves at most as far as the pair: while it moves less than `(face_hysteresis +
-  /// lead) / 2`, no such axis beats the face by more than `face_hysteresis`.
+  /// With points, exact methods: the least overlap of the other axes, but the other shape's lying
+  /// flush with the reference face, minus the face's (length units, ≥ −`face_hysteresis`);
+  /// +infinity otherwise or from `lead_reach` on. While the pair moves less than
+  /// `(face_hysteresis + lead) / 2`, no such axis beats the face by more than `face_hysteresis`.
   T lead = std::numeric_limits<T>::infinity();
 };
 

@@ -116,8 +116,9 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
     answer_on_axis(f, fields_level(q), overlap, least, r);
   }
   fill_manifold(f, q, reference, r);
-  if (r.manifold.point_count > 0)
+  if (r.manifold.point_count > 0) {
     r.manifold.lead = lead_over(f, overlap, 3, 6, 63u, reference.axis, q.lead_reach);
+  }
   return r;
 }
 

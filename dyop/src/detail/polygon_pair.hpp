@@ -11,9 +11,9 @@
 // when the type also has `size_bound` (see `size_bound`), so it may measure.
 
 #include <algorithm>
-#include <limits>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "detail/axis_overlap.hpp"
 #include "detail/clip_manifold.hpp"
