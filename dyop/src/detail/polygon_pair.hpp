@@ -397,7 +397,7 @@ template <class T, class PA, class PB>
   int reference = reference_of(o, o.best_a, o.best_b, q.face_hysteresis);
   int answer_axis = o.least;
   bool no_usable_axis = false;
-  unsigned usable = 0;  // the axes the rule lets the answer take, when it rules
+  unsigned answerable = (1u << f.axes()) - 1;  // every axis; the usable ones when the rule rules
   // The rule, only for a pair not apart beyond the margin whose plain axis or face it refuses.
   const bool ruled =
       (q.masks_a.any() || q.masks_b.any()) && least.overlap >= -q.margin &&
@@ -407,7 +407,7 @@ template <class T, class PA, class PB>
   if (ruled) {
     const UsableAxes u = usable_axes(f, q, o, q.margin + band);
     no_usable_axis = !u.any();
-    usable = u.usable;
+    answerable = u.usable;
     if (u.any()) {
       answer_axis = u.best_a < 0                                ? u.best_b
                     : u.best_b < 0                              ? u.best_a
@@ -439,8 +439,8 @@ template <class T, class PA, class PB>
   } else {
     clip_manifold(f, reference, q.margin, r.manifold);
     if (r.manifold.point_count > 0) {
-      r.manifold.lead = lead_over(f, o.overlap, f.counts[0], f.axes(),
-                                  ruled ? usable : (1u << f.axes()) - 1, reference, q.lead_reach);
+      r.manifold.lead =
+          lead_over(f, o.overlap, f.counts[0], f.axes(), answerable, reference, q.lead_reach);
     }
   }
   return r;
