@@ -150,18 +150,26 @@ template <class Pair>
   answers.push_back(a);
 }
 
-// The solver's answer for the pair with the internal-edge rule: both fixtures' fixed edge data;
-// else a world's contact's own masks when they hold, found only once an answer without them is
-// not apart beyond the skins (it runs the solver again with them); a single pair's as its caller
-// set them in `memory`. `contact`: the world's contact, whose memory is `memory` and `masks`,
-// nullptr for a single pair; `recycling`: its kept pose (it bounds how far the pair moved since:
-// `FoundMasks::motion`), nullptr for none. Nothing when B, the masks known, faces another edge
-// than A (`EdgePair::faces_away`).
+// The query of the solver's answer for the pair, with the internal-edge rule's masks taken: both
+// fixtures' fixed edge data; else a world's contact's own masks when they hold, else none yet
+// (`put_off`: found only once an answer without them is not apart beyond the skins, by
+// `find_put_off_masks`); a single pair's as its caller set them in `memory`. `contact`: the world's
+// contact, whose memory is `memory` and `masks`, nullptr for a single pair; `recycling`: its kept
+// pose (it bounds how far the pair moved since: `FoundMasks::motion`), nullptr for none. Nothing
+// when B, the masks known, faces another edge than A (`EdgePair::faces_away`). The answer itself is
+// the caller's, so that it is built where it is read.
 template <class Pair>
-[[gnu::always_inline]] inline std::optional<Result<float>> solve_with_masks(
+struct Asked {
+  typename Pair::Query q;
+  bool put_off = false;  // the masks are still to be found
+};
+
+template <class Pair>
+[[gnu::always_inline]] inline std::optional<Asked<Pair>> ask(
     const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
     const Contact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
-  typename Pair::Query q;
+  Asked<Pair> asked;
+  typename Pair::Query& q = asked.q;
   q.level = Level::Manifold;
   q.margin = pose.margin;  // the skins: speculative, as Box2D's
   q.face_hysteresis = Pair::hysteresis(pose);
@@ -169,7 +177,6 @@ template <class Pair>
   q.witnesses = false;   // Box2D's solver reads the manifold alone
   // A lead of twice the distance or more never limits the keeping (`face_room`).
   q.lead_reach = setting.recycles() ? 2 * setting.config.recycle_distance : 0;
-  bool put_off = false;
   if (Pair::rule(setting) && contact) {
     // Fixed masks read since the last record was written, free of the poses, hold as they are;
     // masks found under the stamp the contact has now were found since too: no fixture of the
@@ -182,10 +189,10 @@ template <class Pair>
       if (!found_since && contact->fixed_masks(memory, &junction)) {
         masks->fixed_now(records, junction);
       } else {
-        put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
+        asked.put_off = masks_put_off(setting, pose, *masks, *contact, recycling);
       }
     }
-    if (!put_off) {
+    if (!asked.put_off) {
       if (pair.faces_away(pose, memory)) return std::nullopt;
       pair.take_masks(q, memory);
     }
@@ -193,20 +200,24 @@ template <class Pair>
     if (pair.faces_away(pose, memory)) return std::nullopt;
     pair.take_masks(q, memory);
   }
-  Result<float> r = pair.solve(setting, q, pose, memory);
-  if (put_off && needs_masks(r, q.margin)) {
-    masks->found_now(contact->world_fixtures());
-    contact->find_masks(*masks, setting.epoch, memory);
-    if (pair.faces_away(pose, memory)) return std::nullopt;
-    pair.take_masks(q, memory);
-    if (Pair::any_masks(q)) r = pair.solve(setting, q, pose, memory);
-  }
-  ThreadCounters& count = counters();
-  if (Pair::any_masks(q)) count.internal_edge_pairs.add();
-  if constexpr (std::is_same_v<Pair, TrianglePair>) {
-    if (count.answers) record_answer(*count.answers, pair, memory, q);
-  }
-  return r;
+  return asked;
+}
+
+// The answer `r` to a query whose masks were put off (`Asked::put_off`): the same answer unless it
+// needs masks (`needs_masks`); then the contact finds them and the solver answers again with them.
+// False when B, the masks found, faces another edge than A.
+template <class Pair>
+[[gnu::noinline]] bool find_put_off_masks(const Setting& setting, const Pair& pair,
+                                          const PairPose& pose, ContactMemory& memory,
+                                          const Contact& contact, FoundMasks& masks,
+                                          typename Pair::Query& q, Result<float>& r) {
+  if (!needs_masks(r, q.margin)) return true;
+  masks.found_now(contact.world_fixtures());
+  contact.find_masks(masks, setting.epoch, memory);
+  if (pair.faces_away(pose, memory)) return false;
+  pair.take_masks(q, memory);
+  if (Pair::any_masks(q)) r = pair.solve(setting, q, pose, memory);
+  return true;
 }
 
 // Remembers the pose of a manifold just answered: kept while the pair moves less than the
@@ -234,7 +245,7 @@ inline void remember(const Setting& setting, const PairPose& pose, const b2Manif
 // of the least overlap, the bound a fresh answer keeps.
 inline float face_room(float hysteresis, float lead) { return (hysteresis + lead) / 2; }
 
-// Answer, once nothing was kept or skipped: the solver's answer (`solve_with_masks`), its pose
+// Answer, once nothing was kept or skipped: the solver's answer to the query `ask` makes, its pose
 // remembered for keeping (`recycling`: the world's contact's, nullptr for a single pair); Box2D's
 // function where the family's solver is off under the setting (its answer, not a fallback), for
 // shapes the solver refuses and for a method that could not answer (a counted fallback, so that
@@ -253,21 +264,30 @@ template <class Pair>
         if (recycling) remember(setting, pose, *manifold, *gap, contact, *recycling);
         return;
       }
-      const std::optional<Result<float>> r =
-          solve_with_masks(setting, pair, pose, memory, contact, masks, recycling);
-      if (!r) {  // B faces another edge: no contact, judged afresh next time
+      const auto faces_away = [&] {  // B faces another edge: no contact, judged afresh next time
         manifold->pointCount = 0;
         memory.last_face = -1;
         if (recycling) remember(setting, pose, *manifold, 0, contact, *recycling);
-        return;
+      };
+      std::optional<Asked<Pair>> asked =
+          ask(setting, pair, pose, memory, contact, masks, recycling);
+      if (!asked) return faces_away();
+      Result<float> r = pair.solve(setting, asked->q, pose, memory);
+      if (asked->put_off &&
+          !find_put_off_masks(setting, pair, pose, memory, *contact, *masks, asked->q, r)) {
+        return faces_away();
       }
-      if (r->status != Status::Invalid) {
-        memory.last_face = judged_face(r->manifold, pair.count_a());
-        pair.write(manifold, r->manifold, pose);
+      if (Pair::any_masks(asked->q)) count.internal_edge_pairs.add();
+      if constexpr (std::is_same_v<Pair, TrianglePair>) {
+        if (count.answers) record_answer(*count.answers, pair, memory, asked->q);
+      }
+      if (r.status != Status::Invalid) {
+        memory.last_face = judged_face(r.manifold, pair.count_a());
+        pair.write(manifold, r.manifold, pose);
         if (manifold->pointCount > 0) count.manifolds.add();
         if (recycling) {
-          remember(setting, pose, *manifold, pair.gap(*r, pose, memory), contact, *recycling,
-                   face_room(Pair::hysteresis(pose), r->manifold.lead));
+          remember(setting, pose, *manifold, pair.gap(r, pose, memory), contact, *recycling,
+                   face_room(Pair::hysteresis(pose), r.manifold.lead));
         }
         return;
       }

@@ -56,16 +56,11 @@ class Placed : public InPlace {
   Placed(const b2PolygonShape& shape, const b2Transform& xf, float size_bound)
       : InPlace(shape, size_bound), xf_(xf) {}
   Vec2<float> vertex(int i) const {
-    return turn(InPlace::vertex(i)) + Vec2<float>(xf_.p.x, xf_.p.y);
+    return rotated(InPlace::vertex(i), xf_.q.c, xf_.q.s) + Vec2<float>(xf_.p.x, xf_.p.y);
   }
-  Vec2<float> normal(int i) const { return turn(InPlace::normal(i)); }
+  Vec2<float> normal(int i) const { return rotated(InPlace::normal(i), xf_.q.c, xf_.q.s); }
 
  private:
-  Vec2<float> turn(const Vec2<float>& v) const {
-    const float c = xf_.q.c;
-    const float s = xf_.q.s;
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-  }
   const b2Transform& xf_;
 };
 

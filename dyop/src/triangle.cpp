@@ -44,8 +44,8 @@ template <class T>
 Triangle<T> Triangle<T>::moved(T c, T s, const Vec2<T>& translation) const {
   Triangle<T> t = *this;
   for (int i = 0; i < 3; ++i) {
-    t.v_[i] = Vec2<T>(c * v_[i].x() - s * v_[i].y(), s * v_[i].x() + c * v_[i].y()) + translation;
-    t.n_[i] = Vec2<T>(c * n_[i].x() - s * n_[i].y(), s * n_[i].x() + c * n_[i].y());
+    t.v_[i] = rotated(v_[i], c, s) + translation;
+    t.n_[i] = rotated(n_[i], c, s);
   }
   return t;
 }

@@ -165,10 +165,8 @@ inline Triangle<T> Triangle<T>::from_validated(const std::array<Vec2<T>, 3>& ccw
   // Inline: it runs once per triangle per contact update, where a call costs more than the work.
   Triangle<T> t = from_validated(ccw, normals);
   for (int i = 0; i < 3; ++i) {
-    const Vec2<T>& v = ccw[i];
-    const Vec2<T>& n = normals[i];
-    t.v_[i] = Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y()) + translation;
-    t.n_[i] = Vec2<T>(c * n.x() - s * n.y(), s * n.x() + c * n.y());
+    t.v_[i] = rotated(ccw[i], c, s) + translation;
+    t.n_[i] = rotated(normals[i], c, s);
   }
   return t;
 }

@@ -25,4 +25,10 @@ inline Vec2<T> right_perp(const Vec2<T>& v) {
   return Vec2<T>(v.y(), -v.x());
 }
 
+/// `v` turned counter-clockwise by the angle whose cosine and sine are `c` and `s` (c² + s² = 1).
+template <class T>
+inline Vec2<T> rotated(const Vec2<T>& v, T c, T s) {
+  return Vec2<T>(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
 }  // namespace dyop

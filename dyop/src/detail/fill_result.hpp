@@ -158,16 +158,23 @@ constexpr T flush_cosine() {
   return T(1) - T(2e-4);
 }
 
-// Bit k set: `overlap[k] < limit`. Four lanes at a time for float arrays of a multiple of four.
+// Bit k set: `overlap[k] < limit`. Four lanes at a time for float arrays of an even size (the
+// last two lanes of a size not a multiple of four loaded alone).
 template <std::size_t Max, class T>
 unsigned below(const std::array<T, Max>& overlap, T limit) {
 #if defined(__SSE2__)
-  if constexpr (std::is_same_v<T, float> && Max % 4 == 0) {
+  if constexpr (std::is_same_v<T, float> && Max % 2 == 0) {
     const __m128 l = _mm_set1_ps(limit);
     unsigned bits = 0;
-    for (std::size_t k = 0; k < Max; k += 4) {
+    std::size_t k = 0;
+    for (; k + 4 <= Max; k += 4) {
       const __m128 lt = _mm_cmplt_ps(_mm_loadu_ps(overlap.data() + k), l);
       bits |= static_cast<unsigned>(_mm_movemask_ps(lt)) << k;
+    }
+    if (k < Max) {
+      const __m128 two =
+          _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(overlap.data() + k));
+      bits |= (static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(two, l))) & 3u) << k;
     }
     return bits;
   }
