@@ -33,23 +33,22 @@ Triangle<float> triangle(const b2PolygonShape& shape, const b2Transform& xf) {
                                          vec(xf.p));
 }
 
-// Writes the solver's manifold `mf` of polygons `a` and `b` (computed in A's body frame; `b_in_a`:
-// B's body frame given in A's) as Box2D's: the reference face from the polygon's own data (not
-// the solver's recomputed normal: Box2D's solver then sees exactly the plane Box2D would have
-// given it), points in the incident body's frame, the solver's keys.
-void write_polygon_manifold(b2Manifold* manifold, const Manifold<float>& mf,
-                            const b2PolygonShape& a, const b2PolygonShape& b,
-                            const b2Transform& b_in_a) {
-  manifold->pointCount = mf.point_count;
-  if (mf.point_count == 0) return;
-  const b2PolygonShape& ref = mf.reference_is_a ? a : b;
-  const int e1 = mf.reference_edge;
-  const int e2 = e1 + 1 < ref.m_count ? e1 + 1 : 0;
-  manifold->type = mf.reference_is_a ? b2Manifold::e_faceA : b2Manifold::e_faceB;
-  manifold->localNormal = ref.m_normals[e1];
-  manifold->localPoint = 0.5f * (ref.m_vertices[e1] + ref.m_vertices[e2]);
+// Box2D's face fields of a manifold on polygon `ref`'s edge `edge` (`type`: whose face): the
+// polygon's own normal and the edge's midpoint (not the solver's recomputed normal: Box2D's solver
+// then sees exactly the plane Box2D would have given it).
+void write_polygon_face(b2Manifold* manifold, b2Manifold::Type type, const b2PolygonShape& ref,
+                        int edge) {
+  const int next = edge + 1 < ref.m_count ? edge + 1 : 0;
+  manifold->type = type;
+  manifold->localNormal = ref.m_normals[edge];
+  manifold->localPoint = 0.5f * (ref.m_vertices[edge] + ref.m_vertices[next]);
+}
+
+// The solver's points of `mf` (computed in A's body frame; `b_in_a`: B's body frame given in A's)
+// as Box2D's: on the incident shape, in its body frame (B's go back to B's frame), with the
+// solver's keys and no impulse yet.
+void write_points(b2Manifold* manifold, const Manifold<float>& mf, const b2Transform& b_in_a) {
   for (int i = 0; i < mf.point_count; ++i) {
-    // Points lie on the incident polygon, computed in A's frame: B's points go back to B's frame.
     const b2Vec2 p(mf.points[i].point.x(), mf.points[i].point.y());
     b2ManifoldPoint& mp = manifold->points[i];
     mp.localPoint = mf.reference_is_a ? b2MulT(b_in_a, p) : p;
@@ -57,6 +56,17 @@ void write_polygon_manifold(b2Manifold* manifold, const Manifold<float>& mf,
     mp.tangentImpulse = 0;
     mp.id.key = mf.points[i].key;
   }
+}
+
+// Writes the solver's manifold `mf` of polygons `a` and `b` as Box2D's.
+void write_polygon_manifold(b2Manifold* manifold, const Manifold<float>& mf,
+                            const b2PolygonShape& a, const b2PolygonShape& b,
+                            const b2Transform& b_in_a) {
+  manifold->pointCount = mf.point_count;
+  if (mf.point_count == 0) return;
+  write_polygon_face(manifold, mf.reference_is_a ? b2Manifold::e_faceA : b2Manifold::e_faceB,
+                     mf.reference_is_a ? a : b, mf.reference_edge);
+  write_points(manifold, mf, b_in_a);
 }
 
 }  // namespace
@@ -212,21 +222,9 @@ void EdgePair::write_faces(b2Manifold* manifold, const Manifold<float>& mf, cons
     manifold->localNormal = side_normal(mf.reference_edge);
     manifold->localPoint = a.m_vertex1;
   } else {
-    const int e1 = mf.reference_edge;
-    const int e2 = e1 + 1 < b->m_count ? e1 + 1 : 0;
-    manifold->type = b2Manifold::e_faceB;
-    manifold->localNormal = b->m_normals[e1];
-    manifold->localPoint = 0.5f * (b->m_vertices[e1] + b->m_vertices[e2]);
+    write_polygon_face(manifold, b2Manifold::e_faceB, *b, mf.reference_edge);
   }
-  for (int i = 0; i < mf.point_count; ++i) {
-    // Points lie on the incident shape, computed in A's frame: B's go back to B's frame.
-    const b2Vec2 p(mf.points[i].point.x(), mf.points[i].point.y());
-    b2ManifoldPoint& mp = manifold->points[i];
-    mp.localPoint = mf.reference_is_a ? b2MulT(b_in_a, p) : p;
-    mp.normalImpulse = 0;
-    mp.tangentImpulse = 0;
-    mp.id.key = mf.points[i].key;
-  }
+  write_points(manifold, mf, b_in_a);
 }
 
 std::optional<float> EdgeCirclePair::excluded(const PairPose& pose) const {
