@@ -59,31 +59,30 @@ template <class T>
   }
 }
 
-// The answer when the masks refuse the plain one (`Query::internal_edges`): the
-// status over all six axes, the depth, normal and reference face over the usable ones.
+// The answer when the masks refuse the plain one (`Query::internal_edges`), into `r` (as
+// default-initialised): the status over all six axes, the depth, normal and reference face over
+// the usable ones.
 template <class T, class Find>
-[[gnu::noinline]] Result<T> certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
-                                                 const std::array<T, 6>& overlap,
-                                                 const Find& find) {
+[[gnu::noinline]] void certify_allowed_axes(const PairFrame<T>& f, const Query<T>& q,
+                                            const std::array<T, 6>& overlap, const Find& find,
+                                            Result<T>& r) {
   const AllowedAxes<T> allowed = allowed_axes(f, q, overlap);
-  Result<T> r;
   if (!answer_if_apart(f, q, overlap, allowed.least, find, r)) {
     const int axis = allowed.any() ? allowed.least_usable_axis() : allowed.least;
     answer_on_axis(f, fields_level(q), overlap, axis, r);
   }
-  if (q.level != Level::Manifold) return r;
+  if (q.level != Level::Manifold) return;
   // No usable axis: no contact from this pair (another pair of the two bodies carries it), and
   // the face fields name the least axis.
   if (!allowed.any()) {
     set_reference_face(f, allowed.least, r.manifold);
-    return r;
+    return;
   }
   const AxisOverlap<T> reference = allowed.reference(q.face_hysteresis);
   fill_manifold(f, q, reference, r);
   if (r.manifold.point_count > 0) {
     r.manifold.lead = lead_over(f, overlap, 3, 6, allowed.usable, reference.axis, q.lead_reach);
   }
-  return r;
 }
 
 template <class T, class Find = AllFeatures<T>>
@@ -107,9 +106,9 @@ Result<T> certify_axes(const PairFrame<T>& f, const Query<T>& q, const Find& fin
   if (q.internal_edges.any() && overlap[least] >= -q.margin &&
       !(axis_allowed(f, q, least) &&
         (reference.axis == least || axis_allowed(f, q, reference.axis)))) {
-    // Assigned, not returned: one named result on every path keeps the return value optimisation
+    // Filled, not returned: one named result on every path keeps the return value optimisation
     // of the plain path (measured: docs/measurements.md, "Choices in the code").
-    r = certify_allowed_axes(f, q, overlap, find);
+    certify_allowed_axes(f, q, overlap, find, r);
     return r;
   }
   if (!answer_if_apart(f, q, overlap, least, find, r)) {
