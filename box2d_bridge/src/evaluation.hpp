@@ -155,19 +155,20 @@ template <class Pair>
 // (`put_off`: found only once an answer without them is not apart beyond the skins, by
 // `find_put_off_masks`); a single pair's as its caller set them in `memory`. `contact`: the world's
 // contact, whose memory is `memory` and `masks`, nullptr for a single pair; `recycling`: its kept
-// pose (it bounds how far the pair moved since: `FoundMasks::motion`), nullptr for none. Nothing
-// when B, the masks known, faces another edge than A (`EdgePair::faces_away`). The answer itself is
-// the caller's, so that it is built where it is read.
+// pose (it bounds how far the pair moved since: `FoundMasks::motion`), nullptr for none. The
+// answer itself is the caller's, so that it is built where it is read.
 template <class Pair>
 struct Asked {
   typename Pair::Query q;
-  bool put_off = false;  // the masks are still to be found
+  bool put_off = false;     // the masks are still to be found
+  bool faces_away = false;  // B, the masks known, faces another edge than A: no question
 };
 
 template <class Pair>
-[[gnu::always_inline]] inline std::optional<Asked<Pair>> ask(
-    const Setting& setting, const Pair& pair, const PairPose& pose, ContactMemory& memory,
-    const Contact* contact, FoundMasks* masks, const ManifoldRecycling* recycling) {
+[[gnu::always_inline]] inline Asked<Pair> ask(const Setting& setting, const Pair& pair,
+                                              const PairPose& pose, ContactMemory& memory,
+                                              const Contact* contact, FoundMasks* masks,
+                                              const ManifoldRecycling* recycling) {
   Asked<Pair> asked;
   typename Pair::Query& q = asked.q;
   q.level = Level::Manifold;
@@ -193,12 +194,12 @@ template <class Pair>
       }
     }
     if (!asked.put_off) {
-      if (pair.faces_away(pose, memory)) return std::nullopt;
-      pair.take_masks(q, memory);
+      asked.faces_away = pair.faces_away(pose, memory);
+      if (!asked.faces_away) pair.take_masks(q, memory);
     }
   } else if (Pair::rule(setting)) {
-    if (pair.faces_away(pose, memory)) return std::nullopt;
-    pair.take_masks(q, memory);
+    asked.faces_away = pair.faces_away(pose, memory);
+    if (!asked.faces_away) pair.take_masks(q, memory);
   }
   return asked;
 }
@@ -269,17 +270,16 @@ template <class Pair>
         memory.last_face = -1;
         if (recycling) remember(setting, pose, *manifold, 0, contact, *recycling);
       };
-      std::optional<Asked<Pair>> asked =
-          ask(setting, pair, pose, memory, contact, masks, recycling);
-      if (!asked) return faces_away();
-      Result<float> r = pair.solve(setting, asked->q, pose, memory);
-      if (asked->put_off &&
-          !find_put_off_masks(setting, pair, pose, memory, *contact, *masks, asked->q, r)) {
+      Asked<Pair> asked = ask(setting, pair, pose, memory, contact, masks, recycling);
+      if (asked.faces_away) return faces_away();
+      Result<float> r = pair.solve(setting, asked.q, pose, memory);
+      if (asked.put_off &&
+          !find_put_off_masks(setting, pair, pose, memory, *contact, *masks, asked.q, r)) {
         return faces_away();
       }
-      if (Pair::any_masks(asked->q)) count.internal_edge_pairs.add();
+      if (Pair::any_masks(asked.q)) count.internal_edge_pairs.add();
       if constexpr (std::is_same_v<Pair, TrianglePair>) {
-        if (count.answers) record_answer(*count.answers, pair, memory, asked->q);
+        if (count.answers) record_answer(*count.answers, pair, memory, asked.q);
       }
       if (r.status != Status::Invalid) {
         memory.last_face = judged_face(r.manifold, pair.count_a());
