@@ -51,7 +51,7 @@ echo "scene $DYOP_ANSWERS_SCENE: $(grep -o '[0-9]* answers' "$out/plugin.log" | 
 printf '| act | instructions per call |\n|---|--:|\n'
 printf '| entry: pose, skip tests, memory | %s |\n' "$(per $((total - answer)) "$n")"
 printf '| answer: masks taken, counters, result | %s |\n' "$(per $((answer - solve - write)) "$n")"
-printf '| the two triangles placed in A'"'"'s frame | %s |\n' "$(per $((solve - method)) "$n")"
+printf '| the two triangles placed in A'"'"'s frame, the method'"'"'s entry | %s |\n' "$(per $((solve - method)) "$n")"
 printf '| DyOP-PD: six overlaps, status, reference face | %s |\n' \
        "$(per $((method - certify - axis - clip)) "$n")"
 printf '| rule: allowed axes (`allowed_axes`, `axis_allowed`) | %s |\n' \

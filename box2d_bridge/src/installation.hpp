@@ -12,6 +12,7 @@
 
 #include "contact_registry.hpp"
 #include "dyop/box2d.hpp"
+#include "dyop/method.hpp"
 
 namespace dyop::box2d::detail {
 
@@ -22,6 +23,8 @@ struct Setting {
   Config config;  // the skips and the internal-edge switch
   // The library method behind `backend`; nothing for `Backend::Box2D`, which is Box2D's own code.
   std::optional<Method> method;
+  // `method`'s per-pair entry (`MethodInfo::run`), looked up once; nullptr with no method.
+  PairFunction<float> run = nullptr;
   // The internal-edge rule, decided here once: `config.internal_edges` and a method that honours
   // the masks (`MethodInfo::internal_edges()`). Off: no contact ever looks for its masks.
   bool internal_edges = false;
@@ -37,6 +40,7 @@ struct Setting {
       : backend(b),
         config(c),
         method(method_of(b)),
+        run(method ? info(*method).run<float>() : nullptr),
         internal_edges(c.internal_edges && method && info(*method).internal_edges()),
         epoch(install_epoch) {}
 

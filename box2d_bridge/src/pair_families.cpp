@@ -185,9 +185,10 @@ void TrianglePair::validate(ContactMemory& memory) const {
 
 Result<float> TrianglePair::solve(const Setting& setting, const Query& q, const PairPose& pose,
                                   ContactMemory& memory) const {
-  PairState cold;
-  PairState* const state = setting.config.lin_canny_cache ? &memory.warm_start : &cold;
-  return penetrate(*setting.method, triangle(a), triangle(b, pose.b_in_a), q, state);
+  if (!setting.run) return {};  // Invalid: Box2D's function answers, counted as a fallback
+  // No state: a cold start, as a state never written.
+  PairState* const state = setting.config.lin_canny_cache ? &memory.warm_start : nullptr;
+  return setting.run(triangle(a), triangle(b, pose.b_in_a), q, state);
 }
 
 void TrianglePair::write(b2Manifold* manifold, const Manifold<float>& m,
