@@ -26,6 +26,15 @@ Config recycling(float distance) {
   return c;
 }
 
+// `scene` under `config` for `steps` steps with every manifold checked against the exact depth
+// (`Scene::check_manifolds`): its metrics, whose `manifold_errors` are then always there.
+scenes::SceneMetrics checked_run(const char* scene, const Config& config, int steps) {
+  const std::unique_ptr<scenes::Scene> s = scenes::make_scene(scene, Backend::Dyop, kSeed, config);
+  s->check_manifolds();
+  for (int i = 0; i < steps; ++i) s->step();
+  return s->metrics();
+}
+
 // A structure "stands as without recycling" when its top drifts no more than 1 cm beyond what it
 // drifts with recycling off (the drift itself is settling: centimetres; a fall is metres).
 constexpr double kExtraDrift = 0.01;
@@ -55,11 +64,7 @@ TEST(Recycling, PyramidAndStackStandAsWithoutIt) {
 // by then, as in 300 steps.
 TEST(Recycling, KeptManifoldsStayWithinTheBoundOfAFreshAnswer) {
   for (const float d : {0.005f, 0.02f}) {
-    const std::unique_ptr<scenes::Scene> rain =
-        scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(d));
-    rain->check_manifolds();
-    for (int i = 0; i < 150; ++i) rain->step();
-    const scenes::SceneMetrics m = rain->metrics();
+    const scenes::SceneMetrics m = checked_run("rain", recycling(d), 150);
     ASSERT_TRUE(m.manifold_errors.has_value());
     EXPECT_GT(m.recycled.value_or(0), 0u);
     EXPECT_GT(m.manifold_errors->touching, 1000u);
@@ -71,11 +76,7 @@ TEST(Recycling, KeptManifoldsStayWithinTheBoundOfAFreshAnswer) {
 // scene, kept on their own path).
 TEST(Recycling, KeptManifoldsOfBoxesHexagonsAndCirclesStayWithinTheBound) {
   const float d = 0.02f;
-  const std::unique_ptr<scenes::Scene> crowd =
-      scenes::make_scene("crowd", Backend::Dyop, kSeed, recycling(d));
-  crowd->check_manifolds();
-  for (int i = 0; i < 150; ++i) crowd->step();
-  const scenes::SceneMetrics m = crowd->metrics();
+  const scenes::SceneMetrics m = checked_run("crowd", recycling(d), 150);
   ASSERT_TRUE(m.manifold_errors.has_value());
   EXPECT_GT(m.recycled.value_or(0), 1000u);
   EXPECT_GT(m.manifold_errors->touching, 10000u);
@@ -87,11 +88,7 @@ TEST(Recycling, KeptManifoldsOfBoxesHexagonsAndCirclesStayWithinTheBound) {
 // have come to beat it by more than the hysteresis (`Manifold::lead`). 300 steps of the pile:
 // keeping every manifold for the whole distance left depths 0.54 mm off (the hysteresis: 0.5 mm).
 TEST(Recycling, KeptManifoldsByDefaultReadTheExactDepthWithinTheFaceHysteresis) {
-  const std::unique_ptr<scenes::Scene> rain =
-      scenes::make_scene("rain", Backend::Dyop, kSeed, Config::all());
-  rain->check_manifolds();
-  for (int i = 0; i < 300; ++i) rain->step();
-  const scenes::SceneMetrics m = rain->metrics();
+  const scenes::SceneMetrics m = checked_run("rain", Config::all(), 300);
   ASSERT_TRUE(m.manifold_errors.has_value());
   EXPECT_GT(m.recycled.value_or(0), 10000u);
   EXPECT_GT(m.manifold_errors->checked, 10000u);
@@ -113,11 +110,7 @@ TEST(Recycling, OffIsBitIdenticalToThePlugInWithoutIt) {
 }
 
 TEST(Recycling, OffKeepsNothingAndTheFreshAnswerIsTheWorldsOwn) {
-  const std::unique_ptr<scenes::Scene> rain =
-      scenes::make_scene("rain", Backend::Dyop, kSeed, recycling(0));
-  rain->check_manifolds();
-  for (int i = 0; i < 200; ++i) rain->step();
-  const scenes::SceneMetrics m = rain->metrics();
+  const scenes::SceneMetrics m = checked_run("rain", recycling(0), 200);
   EXPECT_EQ(m.recycled.value_or(1), 0u);
   ASSERT_TRUE(m.manifold_errors.has_value());
   EXPECT_EQ(m.manifold_errors->kept_max, 0.0);
