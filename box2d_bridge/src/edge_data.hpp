@@ -25,10 +25,9 @@
 
 namespace dyop::box2d::detail {
 
-// The record: a key naming the fixture it was written for, then the polygon's masks (bits
-// 0..count−1 each, Box2D's vertex order) and its junction.
-struct EdgeRecord {
-  std::uint64_t key = 0;
+// A polygon's edge data in one word: its masks (bits 0..count−1 each, Box2D's vertex order) and
+// its junction. What the fixed record and the found memo hold after their key.
+struct PackedEdgeData {
   std::uint8_t edges = 0;
   std::uint8_t closed_vertices = 0;
   std::uint8_t junction_vertex = Junction::none;
@@ -36,9 +35,29 @@ struct EdgeRecord {
   std::int16_t junction_first = 0;
   std::int16_t junction_last = 0;
 };
-static_assert(sizeof(EdgeRecord) == 2 * sizeof(b2Vec2), "the record fills two vertex slots");
-// The record's second word, after the key: what `record_masks_slot` holds.
-constexpr std::size_t record_data_bytes = sizeof(EdgeRecord) - sizeof(std::uint64_t);
+static_assert(sizeof(PackedEdgeData) == sizeof(b2Vec2), "the edge data fills one slot");
+
+inline PackedEdgeData pack(const PolygonEdgeData& data) {
+  const Junction& j = data.junction;
+  return {data.masks.edges,
+          data.masks.closed_vertices,
+          j.vertex,
+          static_cast<std::uint8_t>(static_cast<unsigned>(j.closed_in) |
+                                    static_cast<unsigned>(j.closed_out) << 1),
+          j.first,
+          j.last};
+}
+
+inline PolygonEdgeData unpack(const PackedEdgeData& p) {
+  Junction j;
+  j.vertex = p.junction_vertex;
+  j.closed_in = (p.junction_closed & 1u) != 0;
+  j.closed_out = (p.junction_closed & 2u) != 0;
+  j.first = p.junction_first;
+  j.last = p.junction_last;
+  return PolygonEdgeData{{p.edges, p.closed_vertices}, j};
+}
+
 static_assert(b2_maxPolygonVertices == 8, "a 7-gon leaves vertex slot 7 and normal slot 7 free");
 static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a vertex mixes into the key as one word");
 
@@ -74,8 +93,8 @@ inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
 }
 
 // Where a polygon's record lives: the two vertex slots after its last vertex (up to 6 vertices),
-// or a 7-gon's last vertex slot (the key) and last normal slot (the masks); Box2D reads only
-// `m_count` of each. The key's word, then the masks' word.
+// or a 7-gon's last vertex slot (the key) and last normal slot (the data); Box2D reads only
+// `m_count` of each. The key's word, then the data's word.
 inline void* record_key_slot(b2PolygonShape& p) { return &p.m_vertices[p.m_count]; }
 inline void* record_masks_slot(b2PolygonShape& p) {
   return p.m_count + 1 < b2_maxPolygonVertices ? static_cast<void*>(&p.m_vertices[p.m_count + 1])
@@ -87,17 +106,12 @@ inline void* record_masks_slot(b2PolygonShape& p) {
 inline std::optional<PolygonEdgeData> fixed_polygon_record(const b2Fixture& fixture) {
   auto& polygon = *static_cast<b2PolygonShape*>(const_cast<b2Shape*>(fixture.GetShape()));
   if (polygon.m_count > max_fixed_vertices) return std::nullopt;
-  EdgeRecord r;
-  std::memcpy(&r.key, record_key_slot(polygon), sizeof r.key);
-  if (r.key != edge_record_key(fixture)) return std::nullopt;
-  std::memcpy(&r.edges, record_masks_slot(polygon), record_data_bytes);
-  Junction j;
-  j.vertex = r.junction_vertex;
-  j.closed_in = (r.junction_closed & 1u) != 0;
-  j.closed_out = (r.junction_closed & 2u) != 0;
-  j.first = r.junction_first;
-  j.last = r.junction_last;
-  return PolygonEdgeData{{r.edges, r.closed_vertices}, j};
+  std::uint64_t key;
+  std::memcpy(&key, record_key_slot(polygon), sizeof key);
+  if (key != edge_record_key(fixture)) return std::nullopt;
+  PackedEdgeData data;
+  std::memcpy(&data, record_masks_slot(polygon), sizeof data);
+  return unpack(data);
 }
 
 // The masks of `fixture_record`'s polygon for a body whose centroid is at `other` (the polygon's
@@ -161,18 +175,10 @@ inline std::uint16_t fixed_records_stamp() {
 inline void write_fixed_edges(b2Fixture& fixture, const PolygonEdgeData& data) {
   fixed_records_written.fetch_add(1, std::memory_order_relaxed);
   auto& polygon = *static_cast<b2PolygonShape*>(fixture.GetShape());
-  EdgeRecord r;
-  r.key = edge_record_key(fixture);
-  r.edges = data.masks.edges;
-  r.closed_vertices = data.masks.closed_vertices;
-  r.junction_vertex = data.junction.vertex;
-  r.junction_closed =
-      static_cast<std::uint8_t>(static_cast<unsigned>(data.junction.closed_in) |
-                                static_cast<unsigned>(data.junction.closed_out) << 1);
-  r.junction_first = data.junction.first;
-  r.junction_last = data.junction.last;
-  std::memcpy(record_key_slot(polygon), &r.key, sizeof r.key);
-  std::memcpy(record_masks_slot(polygon), &r.edges, record_data_bytes);
+  const std::uint64_t key = edge_record_key(fixture);
+  const PackedEdgeData packed = pack(data);
+  std::memcpy(record_key_slot(polygon), &key, sizeof key);
+  std::memcpy(record_masks_slot(polygon), &packed, sizeof packed);
 }
 
 // A two-sided edge fixture's record: the key in `m_vertex0`, what its ends meet in `m_vertex3`.

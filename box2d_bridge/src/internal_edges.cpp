@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "dyop/box2d_internal_edges.hpp"
+#include "edge_data_memo.hpp"
 
 namespace dyop::box2d {
 namespace detail {
@@ -53,6 +56,34 @@ struct GroupSegment {
   b2Vec2 b;
 };
 
+// A fixture (and child, for a chain) the broad phase gives a group (`Group::gather`).
+struct Candidate {
+  const b2Fixture* fixture;
+  int child;
+};
+
+// `h` with `word` mixed in: a multiplication (Knuth's multiplicative constant, widened to 64
+// bits) and a shift, so that every bit of both reaches the high bits and the low.
+std::uint64_t mix(std::uint64_t h, std::uint64_t word) {
+  h = (h ^ word) * 0x9E37'79B9'7F4A'7C15u;
+  return h ^ (h >> 29);
+}
+
+// `h` with the bits of `v` mixed in.
+std::uint64_t mix(std::uint64_t h, const b2Vec2& v) {
+  static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a point mixes in as one word");
+  std::uint64_t word;
+  std::memcpy(&word, &v, sizeof word);
+  return mix(h, word);
+}
+
+// `h` with frame `xf` and the points `v[0..count)` in it mixed in, and the count.
+std::uint64_t mix(std::uint64_t h, const b2Transform& xf, const b2Vec2* v, int count) {
+  h = mix(mix(mix(h, xf.p), b2Vec2(xf.q.s, xf.q.c)), static_cast<std::uint64_t>(count));
+  for (int i = 0; i < count; ++i) h = mix(h, v[i]);
+  return h;
+}
+
 // The polygon fixtures (triangles or any other vertex count) that share edges with one fixture's
 // body (`share_edges`) near it: those whose broad-phase boxes overlap its own (or all of a small
 // non-static body's), in its body's frame; the fixture's own polygon first. The edges and chains
@@ -75,21 +106,30 @@ class Group {
     for (int i = 0; i < first.count; ++i) own_scale_ = std::max(own_scale_, magnitude(first.v[i]));
   }
 
-  void collect() {
-    if (body_.GetType() != b2_staticBody) {
-      int count = 0;
-      const b2Fixture* f = body_.GetFixtureList();
-      for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
-      if (f == nullptr) {  // a small body: all of it
-        for (f = body_.GetFixtureList(); f; f = f->GetNext()) {
-          for (int child = 0; child < f->GetShape()->GetChildCount(); ++child) consider(*f, child);
-        }
-        return;
-      }
+  // True when the group is its body's fixtures, walked (`walk`): a small non-static body. Else
+  // the broad phase's candidates are gathered (`gather`), then considered (`consider_gathered`).
+  bool walked() const {
+    if (body_.GetType() == b2_staticBody) return false;
+    int count = 0;
+    const b2Fixture* f = body_.GetFixtureList();
+    for (; f && count < walked_body_fixtures; f = f->GetNext()) ++count;
+    return f == nullptr;
+  }
+
+  void walk() {
+    for (const b2Fixture* f = body_.GetFixtureList(); f; f = f->GetNext()) {
+      for (int child = 0; child < f->GetShape()->GetChildCount(); ++child) consider(*f, child);
     }
-    // The polygon's own box, not its broad-phase proxy's: every polygon touching it overlaps
-    // it with its fattened box, and a disabled body's fixture has no proxy. The broad phase's own
-    // query: it tells a chain's child edges apart.
+  }
+
+  // The broad phase's candidates for the group: the proxies whose boxes meet the polygon's own
+  // box, not its proxy's (every polygon touching it overlaps it with its fattened box, and a
+  // disabled body's fixture has no proxy); the broad phase's own query, which tells a chain's
+  // child edges apart. Fingerprinted as they come (`fingerprint`).
+  void gather(std::vector<Candidate>& candidates) {
+    candidates_ = &candidates;
+    candidates.clear();
+    fingerprint_ = fingerprint_of_own();
     b2AABB box;
     own_.ComputeAABB(&box, body_.GetTransform(), 0);
     broad_phase().Query(this, box);
@@ -98,8 +138,20 @@ class Group {
   // b2BroadPhase's query callback: every proxy whose box meets the polygon's.
   bool QueryCallback(int32 proxy) {
     const auto* fp = static_cast<const b2FixtureProxy*>(broad_phase().GetUserData(proxy));
-    consider(*fp->fixture, fp->childIndex);
+    const Candidate c{fp->fixture, fp->childIndex};
+    if (!takes(*c.fixture)) return true;
+    candidates_->push_back(c);
+    fingerprint_ += fingerprint_of(c);
     return true;
+  }
+
+  // Everything the group's edge data is found from (`polygon_edge_data`), as one word, never 0:
+  // the own polygon and its body's frame, and each candidate gathered that the group could take
+  // in, its frame, shape and child, summed (the broad phase's order is its own).
+  std::uint64_t fingerprint() const { return fingerprint_ | 1; }
+
+  void consider_gathered() {
+    for (const Candidate& c : *candidates_) consider(*c.fixture, c.child);
   }
 
   const std::vector<GroupPolygon>& polygons() const { return polygons_; }
@@ -125,11 +177,17 @@ class Group {
     return body_.GetWorld()->GetContactManager().m_broadPhase;
   }
 
+  // True when fixture `f` may be taken into the group: another fixture with edges, no sensor
+  // (nothing collides with one: no part of the outline), of a body sharing edges with the own
+  // body.
+  bool takes(const b2Fixture& f) const {
+    return &f != &self_ && !f.IsSensor() && f.GetType() != b2Shape::e_circle &&
+           share_edges(body_, *f.GetBody());
+  }
+
   void consider(const b2Fixture& f, int child) {
-    // A sensor is no part of the outline: nothing collides with it.
-    if (&f == &self_ || f.IsSensor()) return;
+    if (!takes(f)) return;
     const b2Body& body = *f.GetBody();
-    if (!share_edges(body_, body)) return;
     const b2PolygonShape* p = polygon_of(f);
     if (!p) {
       consider_edge(f, child);
@@ -219,6 +277,30 @@ class Group {
     return false;
   }
 
+  // The own polygon and its frame, mixed (`fingerprint`).
+  std::uint64_t fingerprint_of_own() const {
+    return mix(0x5EED'ED6E'DA7A'0002u, body_.GetTransform(), own_.m_vertices, own_.m_count);
+  }
+
+  // Candidate `c` (`takes`), its frame and points (a polygon's vertices, an edge's or a chain
+  // child's ends) and kind, mixed.
+  static std::uint64_t fingerprint_of(const Candidate& c) {
+    const b2Shape* shape = c.fixture->GetShape();
+    const b2Transform& xf = c.fixture->GetBody()->GetTransform();
+    const std::uint64_t kind = static_cast<std::uint64_t>(shape->m_type);
+    if (shape->m_type == b2Shape::e_polygon) {
+      const auto& p = *static_cast<const b2PolygonShape*>(shape);
+      return mix(kind, xf, p.m_vertices, p.m_count);
+    }
+    if (shape->m_type == b2Shape::e_edge) {
+      const auto& e = *static_cast<const b2EdgeShape*>(shape);
+      const b2Vec2 ends[2] = {e.m_vertex1, e.m_vertex2};
+      return mix(kind, xf, ends, 2);
+    }
+    const auto& chain = *static_cast<const b2ChainShape*>(shape);
+    return mix(kind, xf, &chain.m_vertices[c.child], 2);
+  }
+
   const b2Fixture& self_;
   const b2Body& body_;
   const b2PolygonShape& own_;
@@ -229,6 +311,8 @@ class Group {
   float own_scale_ = 0;      // the largest magnitude of the own polygon's coordinates
   bool placed_ = false;      // a polygon of another frame was placed in this one
   float other_origins_ = 0;  // the largest magnitude of those frames' origins
+  std::vector<Candidate>* candidates_ = nullptr;  // gathered (`gather`)
+  std::uint64_t fingerprint_ = 0;                 // of the own polygon and the candidates
 };
 
 // The segment a→b as a line: where points lie along it and how far off it.
@@ -644,18 +728,11 @@ ShapeMasks polygon_internal_edges(const b2Fixture& fixture) {
   return polygon_edge_data(fixture).masks;
 }
 
-PolygonEdgeData polygon_edge_data(const b2Fixture& fixture) {
-  PolygonEdgeData out;
-  const b2PolygonShape* own = polygon_of(fixture);
-  if (!own) return out;
-  const b2Body& body = *fixture.GetBody();
-  const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
-  if (alone && body.GetType() != b2_staticBody) return out;
+namespace {
 
-  thread_local std::vector<GroupPolygon> scratch;
-  thread_local std::vector<GroupSegment> segment_scratch;
-  Group group(fixture, *own, scratch, segment_scratch);
-  group.collect();
+// The edge data of the group's own polygon (`polygon_edge_data`), its group collected.
+PolygonEdgeData edge_data_of(const Group& group) {
+  PolygonEdgeData out;
   const std::vector<GroupPolygon>& polygons = group.polygons();
   const float tol = group.tolerance();
   if (!group.segments().empty()) out.junction = junction_of(polygons, group.segments(), tol);
@@ -711,6 +788,39 @@ PolygonEdgeData polygon_edge_data(const b2Fixture& fixture) {
     masks.closed_vertices |= static_cast<std::uint8_t>(1u << i);
   }
   return out;
+}
+
+}  // namespace
+
+PolygonEdgeData polygon_edge_data(const b2Fixture& fixture) {
+  const b2PolygonShape* own = polygon_of(fixture);
+  if (!own) return {};
+  const b2Body& body = *fixture.GetBody();
+  const bool alone = body.GetFixtureList() == &fixture && fixture.GetNext() == nullptr;
+  if (alone && body.GetType() != b2_staticBody) return {};
+
+  thread_local std::vector<GroupPolygon> scratch;
+  thread_local std::vector<GroupSegment> segment_scratch;
+  Group group(fixture, *own, scratch, segment_scratch);
+  if (group.walked()) {
+    group.walk();
+    return edge_data_of(group);
+  }
+  thread_local std::vector<Candidate> candidates;
+  group.gather(candidates);
+  // A static polygon's group moves only when a static fixture near it changes: its edge data as
+  // found last is memoised under the fingerprint (a moving body's frame moves every step).
+  const bool memo = body.GetType() == b2_staticBody;
+  if (memo) {
+    if (const std::optional<PolygonEdgeData> held =
+            memoised_edge_data(fixture, group.fingerprint())) {
+      return *held;
+    }
+  }
+  group.consider_gathered();
+  const PolygonEdgeData found = edge_data_of(group);
+  if (memo) memoise_edge_data(fixture, group.fingerprint(), found);
+  return found;
 }
 
 InternalEdges triangle_internal_edges(const b2Fixture& fixture) {

@@ -3,8 +3,9 @@
 // what a two-sided edge's ends meet,
 // found from the fixtures as they are now: the triangles near it that share edges with it (its
 // body's, and for a static body every static body's), looked up in the world's own broad phase.
-// Nothing is kept outside the contacts: no table that a deleted world could leave behind, a
-// reused address could fool, or another thread could share.
+// Nothing is kept outside the world's contacts and fixtures (a static polygon's last finding is
+// memoised in its own shape: edge_data_memo.hpp): no table that a deleted world could leave
+// behind, a reused address could fool, or another thread could share.
 
 #include <box2d/b2_body.h>
 #include <box2d/b2_fixture.h>
@@ -87,7 +88,9 @@ struct PolygonEdgeData {
   Junction junction;
 };
 
-// `polygon_internal_edges`, and the polygon's junction.
+// `polygon_internal_edges`, and the polygon's junction. A static polygon's is memoised in its
+// shape under the fingerprint of what it is found from (edge_data_memo.hpp): a finding with the
+// same fingerprint costs the broad-phase query alone.
 PolygonEdgeData polygon_edge_data(const b2Fixture& fixture);
 
 // The masks a polygon `p` with junction `j` adds for a body whose centroid is at `other` (p's
