@@ -286,7 +286,9 @@ template <class Pair>
         pair.write(manifold, r.manifold, pose);
         if (manifold->pointCount > 0) count.manifolds.add();
         if (recycling) {
-          remember(setting, pose, *manifold, pair.gap(r, pose, memory), contact, *recycling,
+          // The gap bounds only an empty manifold's keeping (`remember`).
+          const float gap = manifold->pointCount > 0 ? 0 : pair.gap(r, pose, memory);
+          remember(setting, pose, *manifold, gap, contact, *recycling,
                    face_room(Pair::hysteresis(pose), r.manifold.lead));
         }
         return;
