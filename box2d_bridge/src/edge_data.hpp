@@ -96,7 +96,7 @@ inline std::uint64_t edge_record_key(const b2Fixture& fixture) {
 // or a 7-gon's last vertex slot (the key) and last normal slot (the data); Box2D reads only
 // `m_count` of each. The key's word, then the data's word.
 inline void* record_key_slot(b2PolygonShape& p) { return &p.m_vertices[p.m_count]; }
-inline void* record_masks_slot(b2PolygonShape& p) {
+inline void* record_data_slot(b2PolygonShape& p) {
   return p.m_count + 1 < b2_maxPolygonVertices ? static_cast<void*>(&p.m_vertices[p.m_count + 1])
                                                : static_cast<void*>(&p.m_normals[p.m_count]);
 }
@@ -110,7 +110,7 @@ inline std::optional<PolygonEdgeData> fixed_polygon_record(const b2Fixture& fixt
   std::memcpy(&key, record_key_slot(polygon), sizeof key);
   if (key != edge_record_key(fixture)) return std::nullopt;
   PackedEdgeData data;
-  std::memcpy(&data, record_masks_slot(polygon), sizeof data);
+  std::memcpy(&data, record_data_slot(polygon), sizeof data);
   return unpack(data);
 }
 
@@ -178,7 +178,7 @@ inline void write_fixed_edges(b2Fixture& fixture, const PolygonEdgeData& data) {
   const std::uint64_t key = edge_record_key(fixture);
   const PackedEdgeData packed = pack(data);
   std::memcpy(record_key_slot(polygon), &key, sizeof key);
-  std::memcpy(record_masks_slot(polygon), &packed, sizeof packed);
+  std::memcpy(record_data_slot(polygon), &packed, sizeof packed);
 }
 
 // A two-sided edge fixture's record: the key in `m_vertex0`, what its ends meet in `m_vertex3`.

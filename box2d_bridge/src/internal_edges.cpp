@@ -147,7 +147,7 @@ class Group {
 
   // Everything the group's edge data is found from (`polygon_edge_data`), as one word, never 0:
   // the own polygon and its body's frame, and each candidate gathered that the group could take
-  // in, its frame, shape and child, summed (the broad phase's order is its own).
+  // in, its frame and its shape's points, summed (the broad phase's order is its own).
   std::uint64_t fingerprint() const { return fingerprint_ | 1; }
 
   void consider_gathered() {
