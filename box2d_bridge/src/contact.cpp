@@ -332,19 +332,14 @@ template <class Pair>
 [[gnu::noinline]] void Contact::keep_or_go_on(Contact& c, b2Manifold* manifold,
                                               const b2Transform& xf_a, const b2Transform& xf_b) {
   const Setting& setting = installation().setting;
-  bool kept = false;
+  // Not kept: on with the pair and the pose it has (a chain's child edge is made by a call into
+  // Box2D; the pose by two transforms).
   c.with_pair<Pair>(xf_a, xf_b, [&](const Pair& pair) {
-    kept = keep<Pair>(*manifold, setting, pose_of(pair, c.memory_), c.memory_, c.recycling_, &c,
-                      &c.masks_);
-    // An edge pair goes on with the pair it has: a chain's child edge is made by a call into Box2D.
-    if constexpr (std::is_base_of_v<EdgePair, Pair>) {
-      if (!kept) {
-        detail::skip_or_answer(manifold, setting, pair, c.memory_, &c, &c.masks_, &c.recycling_);
-        kept = true;
-      }
-    }
+    const PairPose pose = pose_of(pair, c.memory_);
+    if (keep<Pair>(*manifold, setting, pose, c.memory_, c.recycling_, &c, &c.masks_)) return;
+    if (!setting.backend) return pair.box2d(manifold);
+    skip_or_answer_at(manifold, setting, pair, pose, c.memory_, &c, &c.masks_, &c.recycling_);
   });
-  if (!kept) skip_or_answer<Pair>(c, manifold, xf_a, xf_b);
 }
 
 template <class Pair>

@@ -317,6 +317,17 @@ extern template void answer<EdgeCirclePair>(b2Manifold*, const Setting&, const E
                                             const PairPose&, ContactMemory&, const Contact*,
                                             FoundMasks*, ManifoldRecycling*);
 
+// Skip, else answer, the pair at `pose` (`pose_of`), installed; see `skip_or_answer`.
+template <class Pair>
+[[gnu::always_inline]] inline void skip_or_answer_at(b2Manifold* manifold, const Setting& setting,
+                                                     const Pair& pair, const PairPose& pose,
+                                                     ContactMemory& memory, const Contact* contact,
+                                                     FoundMasks* masks,
+                                                     ManifoldRecycling* recycling) {
+  if (skip(manifold, setting, pair, pose, memory, recycling)) return;
+  answer(manifold, setting, pair, pose, memory, contact, masks, recycling);
+}
+
 // An evaluation, once nothing was kept (or with nothing to keep): skip, else answer; uninstalled,
 // Box2D's own answer, uncounted, exactly as Box2D's own contact. `memory` is the pair's state, its
 // shapes looked at (`look_at_shapes`), updated; `contact` the world's contact it belongs to, if
@@ -329,9 +340,8 @@ template <class Pair>
                                                   FoundMasks* masks = nullptr,
                                                   ManifoldRecycling* recycling = nullptr) {
   if (!setting.backend) return pair.box2d(manifold);
-  const PairPose pose = pose_of(pair, memory);
-  if (skip(manifold, setting, pair, pose, memory, recycling)) return;
-  answer(manifold, setting, pair, pose, memory, contact, masks, recycling);
+  skip_or_answer_at(manifold, setting, pair, pose_of(pair, memory), memory, contact, masks,
+                    recycling);
 }
 
 }  // namespace dyop::box2d::detail
