@@ -24,15 +24,15 @@ namespace dyop::box2d::detail {
 
 // `h` with `body`'s frame folded in when it is static (its type too: a body made static or not
 // folds differently); a moving body's frame is not part of any mask. The frame as two 64-bit
-// words, one multiplication each (Knuth's multiplicative hash, its constant widened to 64 bits):
-// every kept manifold of a pair with a static body pays it.
+// words, one multiplication each (`mix_word`): every kept manifold of a pair with a static body
+// pays it.
 inline std::uint32_t fold_static_frame(std::uint32_t h, const b2Body& body) {
   if (body.GetType() != b2_staticBody) return h;
   std::uint64_t words[2];
   static_assert(sizeof(b2Transform) == sizeof words, "b2Transform is four floats");
   std::memcpy(words, &body.GetTransform(), sizeof words);
   std::uint64_t x = h;
-  for (const std::uint64_t w : words) x = (x ^ w) * 0x9E3779B97F4A7C15u;
+  for (const std::uint64_t w : words) x = mix_word(x, w);
   return static_cast<std::uint32_t>(x >> 32);
 }
 

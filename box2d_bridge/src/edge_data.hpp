@@ -59,7 +59,20 @@ inline PolygonEdgeData unpack(const PackedEdgeData& p) {
 }
 
 static_assert(b2_maxPolygonVertices == 8, "a 7-gon leaves vertex slot 7 and normal slot 7 free");
-static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a vertex mixes into the key as one word");
+
+// `h` with the word `w` mixed in: one multiplication by Knuth's multiplicative constant, widened to
+// 64 bits. The record's key, a contact's stamp and the found memo's fingerprint mix with it.
+inline std::uint64_t mix_word(std::uint64_t h, std::uint64_t w) {
+  return (h ^ w) * 0x9E37'79B9'7F4A'7C15u;
+}
+
+// `h` with the bits of point `v` mixed in as one word.
+inline std::uint64_t mix_point(std::uint64_t h, const b2Vec2& v) {
+  static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a point mixes in as one word");
+  std::uint64_t word;
+  std::memcpy(&word, &v, sizeof word);
+  return mix_word(h, word);
+}
 
 // Most vertices a polygon fixture may have to hold fixed edge data: an 8-gon has no slot left
 // (its contacts find its masks, as for a fixture never fixed).
@@ -74,15 +87,10 @@ constexpr int max_fixed_vertices = b2_maxPolygonVertices - 1;
 // accepted only as the same polygon on the same body, where the record still describes it.
 // The constant makes a key unlike the float coordinates the slots hold otherwise. Never 0.
 inline std::uint64_t edge_record_key(const b2Fixture& fixture, const b2Vec2* vertices, int count) {
-  constexpr std::uint64_t mix = 0x9E37'79B9'7F4A'7C15u;
   std::uint64_t key = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(&fixture));
-  key = (key ^ 0x5EED'ED6E'DA7A'0001u) * mix;
-  key = (key ^ reinterpret_cast<std::uintptr_t>(fixture.GetBody())) * mix;
-  for (int i = 0; i < count; ++i) {
-    std::uint64_t vertex;
-    std::memcpy(&vertex, &vertices[i], sizeof vertex);
-    key = (key ^ vertex) * mix;
-  }
+  key = mix_word(key, 0x5EED'ED6E'DA7A'0001u);
+  key = mix_word(key, reinterpret_cast<std::uintptr_t>(fixture.GetBody()));
+  for (int i = 0; i < count; ++i) key = mix_point(key, vertices[i]);
   return key | 1;
 }
 

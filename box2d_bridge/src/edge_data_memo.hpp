@@ -22,20 +22,19 @@ namespace dyop::box2d::detail {
 // record's (a 7-gon's record takes its last normal slot).
 constexpr int max_memo_vertices = b2_maxPolygonVertices - 2;
 
-// The memo's slots: the fingerprint's word, then the data's word.
+// The memo's slots: the fingerprint's word, then the data's word; nullptr for a polygon of more
+// than `max_memo_vertices`.
 inline b2Vec2* memo_slots(const b2Fixture& fixture) {
   auto& polygon = *static_cast<b2PolygonShape*>(const_cast<b2Shape*>(fixture.GetShape()));
-  return &polygon.m_normals[polygon.m_count];
+  return polygon.m_count <= max_memo_vertices ? &polygon.m_normals[polygon.m_count] : nullptr;
 }
 
 // The edge data memoised for polygon fixture `fixture` under `fingerprint`, or nothing (another
 // fingerprint, never memoised, or too many vertices).
 inline std::optional<PolygonEdgeData> memoised_edge_data(const b2Fixture& fixture,
                                                          std::uint64_t fingerprint) {
-  if (static_cast<const b2PolygonShape*>(fixture.GetShape())->m_count > max_memo_vertices) {
-    return std::nullopt;
-  }
   const b2Vec2* slots = memo_slots(fixture);
+  if (!slots) return std::nullopt;
   std::uint64_t held;
   std::memcpy(&held, &slots[0], sizeof held);
   if (held != fingerprint) return std::nullopt;
@@ -49,17 +48,11 @@ inline std::optional<PolygonEdgeData> memoised_edge_data(const b2Fixture& fixtur
 // the thread stepping the fixture's world reaches it.
 inline void memoise_edge_data(const b2Fixture& fixture, std::uint64_t fingerprint,
                               const PolygonEdgeData& data) {
-  if (static_cast<const b2PolygonShape*>(fixture.GetShape())->m_count > max_memo_vertices) return;
   b2Vec2* slots = memo_slots(fixture);
+  if (!slots) return;
   const PackedEdgeData packed = pack(data);
   std::memcpy(static_cast<void*>(&slots[0]), &fingerprint, sizeof fingerprint);
   std::memcpy(static_cast<void*>(&slots[1]), &packed, sizeof packed);
-}
-
-// Forgets `fixture`'s memo (the next finding searches its group), for a polygon fixture.
-inline void forget_memoised_edge_data(const b2Fixture& fixture) {
-  if (static_cast<const b2PolygonShape*>(fixture.GetShape())->m_count > max_memo_vertices) return;
-  memo_slots(fixture)[0].SetZero();
 }
 
 }  // namespace dyop::box2d::detail

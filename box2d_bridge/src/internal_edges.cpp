@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <vector>
 
@@ -62,26 +61,14 @@ struct Candidate {
   int child;
 };
 
-// `h` with `word` mixed in: a multiplication (Knuth's multiplicative constant, widened to 64
-// bits) and a shift, so that every bit of both reaches the high bits and the low.
-std::uint64_t mix(std::uint64_t h, std::uint64_t word) {
-  h = (h ^ word) * 0x9E37'79B9'7F4A'7C15u;
-  return h ^ (h >> 29);
-}
-
-// `h` with the bits of `v` mixed in.
-std::uint64_t mix(std::uint64_t h, const b2Vec2& v) {
-  static_assert(sizeof(b2Vec2) == sizeof(std::uint64_t), "a point mixes in as one word");
-  std::uint64_t word;
-  std::memcpy(&word, &v, sizeof word);
-  return mix(h, word);
-}
-
-// `h` with frame `xf` and the points `v[0..count)` in it mixed in, and the count.
+// `h` with frame `xf` and the points `v[0..count)` in it mixed in (`mix_point`), and the count;
+// then shifted into itself, so that the high bits of the products reach the low ones before
+// fingerprints are summed.
 std::uint64_t mix(std::uint64_t h, const b2Transform& xf, const b2Vec2* v, int count) {
-  h = mix(mix(mix(h, xf.p), b2Vec2(xf.q.s, xf.q.c)), static_cast<std::uint64_t>(count));
-  for (int i = 0; i < count; ++i) h = mix(h, v[i]);
-  return h;
+  h = mix_word(mix_point(mix_point(h, xf.p), b2Vec2(xf.q.s, xf.q.c)),
+               static_cast<std::uint64_t>(count));
+  for (int i = 0; i < count; ++i) h = mix_point(h, v[i]);
+  return h ^ (h >> 29);
 }
 
 // The polygon fixtures (triangles or any other vertex count) that share edges with one fixture's
@@ -118,6 +105,7 @@ class Group {
 
   void walk() {
     for (const b2Fixture* f = body_.GetFixtureList(); f; f = f->GetNext()) {
+      if (!takes(*f)) continue;
       for (int child = 0; child < f->GetShape()->GetChildCount(); ++child) consider(*f, child);
     }
   }
@@ -145,10 +133,10 @@ class Group {
     return true;
   }
 
-  // Everything the group's edge data is found from (`polygon_edge_data`), as one word, never 0:
-  // the own polygon and its body's frame, and each candidate gathered that the group could take
-  // in, its frame and its shape's points, summed (the broad phase's order is its own).
-  std::uint64_t fingerprint() const { return fingerprint_ | 1; }
+  // Everything the group's edge data is found from (`polygon_edge_data`), as one word: the own
+  // polygon and its body's frame, and each candidate gathered that the group could take in, its
+  // frame and its shape's points, summed (the broad phase's order is its own).
+  std::uint64_t fingerprint() const { return fingerprint_; }
 
   void consider_gathered() {
     for (const Candidate& c : *candidates_) consider(*c.fixture, c.child);
@@ -185,8 +173,9 @@ class Group {
            share_edges(body_, *f.GetBody());
   }
 
+  // Takes fixture `f` (child `child`), which the group may take (`takes`), when it touches the own
+  // polygon.
   void consider(const b2Fixture& f, int child) {
-    if (!takes(f)) return;
     const b2Body& body = *f.GetBody();
     const b2PolygonShape* p = polygon_of(f);
     if (!p) {

@@ -131,16 +131,9 @@ EdgeBits edge_bits(const Triangle<T>& own, const std::array<Vec2<T>, 3>& own_v,
 inline EdgeBits edge_bits(const Triangle<float>& own, const std::array<Vec2<float>, 3>& own_v,
                           const std::array<Vec2<float>, 3>& other, unsigned internal,
                           unsigned other_closed, unsigned other_internal, float reach) {
-  const __m128 nx = _mm_setr_ps(own.normal(0).x(), own.normal(1).x(), own.normal(2).x(), 0.0f);
-  const __m128 ny = _mm_setr_ps(own.normal(0).y(), own.normal(1).y(), own.normal(2).y(), 0.0f);
-  const __m128 px = _mm_setr_ps(own_v[0].x(), own_v[1].x(), own_v[2].x(), 0.0f);
-  const __m128 py = _mm_setr_ps(own_v[0].y(), own_v[1].y(), own_v[2].y(), 0.0f);
-  const __m128 line = _mm_add_ps(_mm_mul_ps(nx, px), _mm_mul_ps(ny, py));
-  __m128 d[3];
-  for (int w = 0; w < 3; ++w) {
-    d[w] = _mm_add_ps(_mm_mul_ps(nx, _mm_set1_ps(other[w].x())),
-                      _mm_mul_ps(ny, _mm_set1_ps(other[w].y())));
-  }
+  const LaneProducts products = lane_products(own, own_v, other);
+  const __m128 line = products.line;
+  const __m128* d = products.along;
   // As `realised_inside`, an own edge per lane: the deep vertex as `realised_inside` picks it
   // (d1 < d0 picks 1, then d2 below the lesser picks 2); a closed one refuses the lane unless an
   // outline edge of the other at it lies flat (the same rise and bound as `realised_inside`).

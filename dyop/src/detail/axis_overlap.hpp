@@ -68,30 +68,40 @@ inline std::array<T, 6> all_overlaps(const PairFrame<T>& f) {
 }
 
 #if defined(__SSE2__)
+// One triangle's edge normals against the pair's vertices, its edge i in lane i: the products the
+// float `all_overlaps` and the rule's `edge_bits` start from.
+struct LaneProducts {
+  __m128 line;      // n_i · (own vertex i)
+  __m128 along[3];  // n_i · (other vertex w), for w = 0, 1, 2
+};
+
+inline LaneProducts lane_products(const Triangle<float>& t, const std::array<Vec2<float>, 3>& own,
+                                  const std::array<Vec2<float>, 3>& other) {
+  const __m128 nx = _mm_setr_ps(t.normal(0).x(), t.normal(1).x(), t.normal(2).x(), 0.0f);
+  const __m128 ny = _mm_setr_ps(t.normal(0).y(), t.normal(1).y(), t.normal(2).y(), 0.0f);
+  const auto along = [&](const __m128& x, const __m128& y) {
+    return _mm_add_ps(_mm_mul_ps(nx, x), _mm_mul_ps(ny, y));
+  };
+  LaneProducts p;
+  p.line = along(_mm_setr_ps(own[0].x(), own[1].x(), own[2].x(), 0.0f),
+                 _mm_setr_ps(own[0].y(), own[1].y(), own[2].y(), 0.0f));
+  for (int w = 0; w < 3; ++w) {
+    p.along[w] = along(_mm_set1_ps(other[w].x()), _mm_set1_ps(other[w].y()));
+  }
+  return p;
+}
+
 // The same for float, each triangle's three axes in the lanes of one SSE register: the same
 // products, sums and minima in the same order (`std::min(x, y)` is `_mm_min_ps(y, x)`, to the
 // sign of a zero), so the same bits (tested against the generic one).
 inline std::array<float, 6> all_overlaps(const PairFrame<float>& f) {
-  const auto overlaps = [](const Triangle<float>& t, const std::array<Vec2<float>, 3>& own,
-                           const std::array<Vec2<float>, 3>& other) {
-    const __m128 nx = _mm_setr_ps(t.normal(0).x(), t.normal(1).x(), t.normal(2).x(), 0.0f);
-    const __m128 ny = _mm_setr_ps(t.normal(0).y(), t.normal(1).y(), t.normal(2).y(), 0.0f);
-    const auto along = [&](const __m128& x, const __m128& y) {
-      return _mm_add_ps(_mm_mul_ps(nx, x), _mm_mul_ps(ny, y));
-    };
-    const auto along_vertex = [&](const Vec2<float>& v) {
-      return along(_mm_set1_ps(v.x()), _mm_set1_ps(v.y()));
-    };
-    const __m128 line = along(_mm_setr_ps(own[0].x(), own[1].x(), own[2].x(), 0.0f),
-                              _mm_setr_ps(own[0].y(), own[1].y(), own[2].y(), 0.0f));
-    const __m128 least = _mm_min_ps(along_vertex(other[2]),
-                                    _mm_min_ps(along_vertex(other[1]), along_vertex(other[0])));
-    return _mm_sub_ps(line, least);
+  const auto overlaps = [](const LaneProducts& p) {
+    return _mm_sub_ps(p.line, _mm_min_ps(p.along[2], _mm_min_ps(p.along[1], p.along[0])));
   };
   alignas(16) float a[4];
   alignas(16) float b[4];
-  _mm_store_ps(a, overlaps(f.ta, f.a, f.b));
-  _mm_store_ps(b, overlaps(f.tb, f.b, f.a));
+  _mm_store_ps(a, overlaps(lane_products(f.ta, f.a, f.b)));
+  _mm_store_ps(b, overlaps(lane_products(f.tb, f.b, f.a)));
   return {a[0], a[1], a[2], b[0], b[1], b[2]};
 }
 #endif
